@@ -1,0 +1,111 @@
+#pragma once
+// The messages of the papercraft pipeline (DESIGN.md section 2). Payloads are immutable
+// once sent and shared between nodes through shared_ptr<const T>.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/strip.h"
+
+namespace papercraft {
+
+struct PatternLayout;  // nodes/layout/pages.h
+
+/// Facts about the input mesh, for report.json.
+struct MeshSummary {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  Vec3 box_min = Vec3::Zero();
+  Vec3 box_max = Vec3::Zero();
+  double largest_side = 0.0;
+  int boundary_loops = 0;
+  int components = 0;
+  int euler_characteristic = 0;
+  bool has_uvs = false;
+};
+
+/// A loaded, validated input mesh.
+struct Model {
+  static constexpr const char* kMessageName = "Model";
+  std::shared_ptr<const Mesh> mesh;
+  MeshSummary summary;
+  std::string texture_path;
+};
+
+/// A connected piece of the model being refined. Its vertices carry the int property
+/// "v:input_vertex" (-1 where a cut created them).
+struct Part {
+  static constexpr const char* kMessageName = "Part";
+  std::shared_ptr<const Mesh> mesh;
+  int id = 0;
+  int depth = 0;  // number of cuts from the segment it came from
+  std::shared_ptr<const Model> model;
+};
+
+/// A part with the two strip boundaries chosen (a loop or a single vertex each) and the
+/// part's remaining boundary loops (holes).
+struct Candidate {
+  static constexpr const char* kMessageName = "Candidate";
+  Part part;
+  std::vector<int> first;
+  std::vector<int> second;
+  bool first_closed = false;
+  bool second_closed = false;
+  Polyline a;
+  Polyline b;
+  std::vector<std::vector<int>> holes;
+};
+
+/// A candidate with its triangulated ruled surface.
+struct StripCandidate {
+  static constexpr const char* kMessageName = "StripCandidate";
+  std::shared_ptr<const Candidate> candidate;
+  std::shared_ptr<const RuledStrip> strip;
+};
+
+/// A strip whose two-sided Hausdorff distance to its part is within the tolerance.
+struct AcceptedStrip {
+  static constexpr const char* kMessageName = "AcceptedStrip";
+  std::shared_ptr<const Candidate> candidate;
+  std::shared_ptr<const RuledStrip> strip;
+  int strip_id = 0;
+  double upper_bound = 0.0;  // certified upper bound of the Hausdorff distance
+  bool certified = true;     // false for sampled (uncertified) deciders
+};
+
+/// A strip that failed: the part must be cut through the witness (the located maximum
+/// error) or, when `hole` >= 0, through that hole (paper 3.2.2: holes are always split).
+struct RejectedStrip {
+  static constexpr const char* kMessageName = "RejectedStrip";
+  std::shared_ptr<const Candidate> candidate;
+  std::shared_ptr<const RuledStrip> strip;
+  Vec3 witness = Vec3::Zero();
+  double witness_error = 0.0;
+  int hole = -1;  // index into candidate->holes
+};
+
+/// The flat strips unfolded from one accepted 3D strip.
+struct UnfoldedStrip {
+  static constexpr const char* kMessageName = "UnfoldedStrip";
+  std::shared_ptr<const AcceptedStrip> strip;
+  std::vector<FlatStrip> flat;
+};
+
+/// All strips of one model, after merging.
+struct ModelStrips {
+  static constexpr const char* kMessageName = "ModelStrips";
+  std::vector<std::shared_ptr<const AcceptedStrip>> strips3d;  // sorted by strip_id
+  std::vector<FlatStrip> flat;
+  std::size_t flat_before_merge = 0;
+};
+
+/// Strips laid out on pages, ready to export.
+struct Pattern {
+  static constexpr const char* kMessageName = "Pattern";
+  std::shared_ptr<const ModelStrips> strips;
+  std::shared_ptr<const PatternLayout> layout;  // null when the config has no layout
+};
+
+}  // namespace papercraft

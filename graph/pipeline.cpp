@@ -1,0 +1,335 @@
+#include "graph/pipeline.h"
+
+#include <spdlog/spdlog.h>
+#include <tbb/flow_graph.h>
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <condition_variable>
+#include <set>
+#include <thread>
+
+#include "core/errors.h"
+
+namespace papercraft {
+
+namespace flow = tbb::flow;
+
+namespace {
+
+constexpr int kMaxPorts = 2;
+using NodeOutputs = std::tuple<Envelope, Envelope>;
+using FlowNode = flow::multifunction_node<Envelope, NodeOutputs>;
+using GatherNode = flow::multifunction_node<Envelope, std::tuple<Envelope>>;
+
+}  // namespace
+
+std::vector<std::string> unique_model_names(const std::vector<std::filesystem::path>& inputs) {
+  std::vector<std::string> names;
+  std::map<std::string, int> used;
+  for (const auto& input : inputs) {
+    std::string stem = input.stem().string();
+    if (stem.empty()) stem = "model";
+    const int count = ++used[stem];
+    names.push_back(count == 1 ? stem : stem + "-" + std::to_string(count));
+  }
+  return names;
+}
+
+Pipeline::Pipeline(PipelineConfig config, const Registry& registry)
+    : config_(std::move(config)), registry_(registry) {}
+
+Pipeline::~Pipeline() = default;
+
+std::vector<std::string> Pipeline::node_names() const {
+  std::vector<std::string> names;
+  for (const auto& n : config_.nodes) names.push_back(n.name);
+  return names;
+}
+
+std::vector<NodeTiming> Pipeline::timings(const ModelRun& run) const {
+  std::vector<NodeTiming> out;
+  for (std::size_t i = 0; i < config_.nodes.size(); ++i) {
+    out.push_back({config_.nodes[i].name, config_.nodes[i].impl, run.node_stats[i].calls.load(),
+                   run.node_stats[i].nanoseconds.load() * 1e-9});
+  }
+  return out;
+}
+
+namespace {
+
+// The state of one run() call: the flow graph, the job feed and the results.
+class Execution {
+ public:
+  Execution(const PipelineConfig& config, const Registry& registry,
+            const std::vector<std::filesystem::path>& inputs,
+            std::shared_ptr<const RunSettings> settings, const PipelineOptions& options)
+      : config_(config),
+        inputs_(inputs),
+        names_(unique_model_names(inputs)),
+        settings_(std::move(settings)),
+        options_(options),
+        results_(inputs.size()) {
+    const std::size_t n = config.nodes.size();
+    specs_.resize(n);
+    gather_of_node_.assign(n, -1);
+    for (std::size_t i = 0; i < n; ++i) {
+      specs_[i] = registry.find(config.nodes[i].impl);
+      bodies_.push_back(std::shared_ptr<NodeBody>(specs_[i]->create(config.nodes[i].params)));
+    }
+  }
+
+  std::vector<ModelResult> run() {
+    const int threads = options_.threads > 0 ? options_.threads
+                                             : tbb::info::default_concurrency();
+    max_in_flight_ = options_.max_models_in_flight > 0 ? options_.max_models_in_flight
+                                                       : 2 * threads;
+    tbb::task_arena arena(threads);
+    std::thread ticker;
+    if (options_.progress) ticker = std::thread([this] { progress_loop(); });
+    arena.execute([&] {
+      flow::graph graph;
+      build(graph);
+      const std::size_t first = std::min<std::size_t>(max_in_flight_, inputs_.size());
+      for (std::size_t i = 0; i < first; ++i) start_next();
+      graph.wait_for_all();
+    });
+    {
+      std::lock_guard lock(progress_mutex_);
+      stop_progress_ = true;
+    }
+    progress_cv_.notify_all();
+    if (ticker.joinable()) ticker.join();
+    return std::move(results_);
+  }
+
+ private:
+  void build(flow::graph& graph) {
+    const std::size_t n = config_.nodes.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const int concurrency = config_.nodes[i].concurrency;
+      const std::size_t limit =
+          concurrency == 0 ? flow::unlimited : static_cast<std::size_t>(concurrency);
+      nodes_.push_back(std::make_unique<FlowNode>(
+          graph, limit, [this, i](const Envelope& in, FlowNode::output_ports_type& ports) {
+            run_node(static_cast<int>(i), in, ports);
+          }));
+      if (specs_[i]->gathers) {
+        const int g = static_cast<int>(gathers_.size());
+        gather_of_node_[i] = g;
+        gathers_.push_back(std::make_unique<GatherNode>(
+            graph, flow::unlimited,
+            [this, g](const Envelope& in, GatherNode::output_ports_type& ports) {
+              run_gather(g, in, ports);
+            }));
+        flow::make_edge(flow::output_port<0>(*gathers_.back()), *nodes_[i]);
+      }
+    }
+    // Gathers fire upstream first: order them by a topological order of the forward edges.
+    std::vector<int> indegree(n, 0);
+    for (const auto& e : config_.edges) {
+      if (!e.back) indegree[e.to]++;
+    }
+    std::vector<int> ready;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (indegree[i] == 0) ready.push_back(static_cast<int>(i));
+    }
+    while (!ready.empty()) {
+      const int v = ready.back();
+      ready.pop_back();
+      if (gather_of_node_[v] >= 0) gather_order_.push_back(gather_of_node_[v]);
+      for (const auto& e : config_.edges) {
+        if (!e.back && e.from == v && --indegree[e.to] == 0) ready.push_back(e.to);
+      }
+    }
+    for (const auto& e : config_.edges) {
+      flow::receiver<Envelope>& target =
+          gather_of_node_[e.to] >= 0
+              ? static_cast<flow::receiver<Envelope>&>(*gathers_[gather_of_node_[e.to]])
+              : static_cast<flow::receiver<Envelope>&>(*nodes_[e.to]);
+      if (e.port == 0) {
+        flow::make_edge(flow::output_port<0>(*nodes_[e.from]), target);
+      } else {
+        flow::make_edge(flow::output_port<1>(*nodes_[e.from]), target);
+      }
+    }
+  }
+
+  class PortEmitter : public Emitter {
+   public:
+    PortEmitter(const NodeSpec& spec, const Envelope& in, FlowNode::output_ports_type& ports)
+        : spec_(spec), in_(in), ports_(ports) {}
+
+   protected:
+    void emit_any(int port, std::type_index type, std::any payload) override {
+      if (port < 0 || port >= static_cast<int>(spec_.outputs.size()) || port >= kMaxPorts) {
+        throw std::logic_error(spec_.name + " emitted on port " + std::to_string(port) +
+                               " which it does not declare");
+      }
+      if (type != spec_.outputs[port].type.type) {
+        throw std::logic_error(spec_.name + " emitted a message that is not " +
+                               spec_.outputs[port].type.name + " on port '" +
+                               spec_.outputs[port].name + "'");
+      }
+      in_.model->in_flight.fetch_add(1);
+      Envelope out{in_.model, std::move(payload)};
+      const bool taken = port == 0 ? std::get<0>(ports_).try_put(out)
+                                   : std::get<1>(ports_).try_put(out);
+      if (!taken) in_.model->in_flight.fetch_sub(1);  // unconnected port: dropped
+    }
+
+   private:
+    const NodeSpec& spec_;
+    const Envelope& in_;
+    FlowNode::output_ports_type& ports_;
+  };
+
+  void run_node(int index, const Envelope& in, FlowNode::output_ports_type& ports) {
+    ModelRun& model = *in.model;
+    if (!model.failed()) {
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        PortEmitter emitter(*specs_[index], in, ports);
+        bodies_[index]->process(in, emitter);
+      } catch (const std::exception& e) {
+        model.fail(config_.nodes[index].name, e.what());
+      } catch (...) {
+        model.fail(config_.nodes[index].name, "unknown exception");
+      }
+      const auto elapsed = std::chrono::steady_clock::now() - start;
+      model.node_stats[index].calls.fetch_add(1);
+      model.node_stats[index].nanoseconds.fetch_add(
+          std::chrono::duration_cast<std::chrono::nanoseconds>(elapsed).count());
+    }
+    release(in.model);
+  }
+
+  void run_gather(int g, const Envelope& in, GatherNode::output_ports_type& ports) {
+    ModelRun& model = *in.model;
+    if (in.payload.has_value()) {
+      std::lock_guard lock(model.gather_mutex);
+      model.gathered[g].push_back(in.payload);
+    } else if (!model.failed()) {
+      auto batch = std::make_shared<Gathered>();
+      {
+        std::lock_guard lock(model.gather_mutex);
+        batch->items = std::move(model.gathered[g]);
+        model.gathered.erase(g);
+      }
+      model.in_flight.fetch_add(1);
+      std::get<0>(ports).try_put(Envelope{in.model, std::shared_ptr<const Gathered>(batch)});
+    }
+    release(in.model);
+  }
+
+  void release(const std::shared_ptr<ModelRun>& model) {
+    if (model->in_flight.fetch_sub(1) != 1) return;
+    // Nothing of this model is left in the graph: fire the next gather or finish.
+    if (!model->failed()) {
+      for (const int g : gather_order_) {
+        bool fire = false;
+        {
+          std::lock_guard lock(model->gather_mutex);
+          if (model->gather_flushed.size() < gathers_.size()) {
+            model->gather_flushed.resize(gathers_.size(), false);
+          }
+          if (!model->gather_flushed[g]) {
+            model->gather_flushed[g] = true;
+            fire = true;
+          }
+        }
+        if (fire) {
+          model->in_flight.fetch_add(1);
+          gathers_[g]->try_put(Envelope{model, {}});
+          return;
+        }
+      }
+    }
+    finish(model);
+  }
+
+  void start_next() {
+    const std::size_t index = next_input_.fetch_add(1);
+    if (index >= inputs_.size()) return;
+    auto model = std::make_shared<ModelRun>(static_cast<int>(index), inputs_[index],
+                                            names_[index], settings_, config_.nodes.size());
+    {
+      std::lock_guard lock(active_mutex_);
+      active_.insert(model.get());
+    }
+    model->in_flight.store(1);
+    nodes_[config_.entry]->try_put(
+        Envelope{model, std::make_shared<const Job>(Job{inputs_[index]})});
+  }
+
+  void finish(const std::shared_ptr<ModelRun>& model) {
+    ModelResult& result = results_[model->index];
+    result.name = model->name;
+    result.input = model->input_path;
+    result.ok = !model->failed();
+    result.error = model->error();
+    result.seconds = model->seconds();
+    result.results = model->results();
+    if (result.ok) {
+      spdlog::info("{}: done in {:.3f} s", model->name, result.seconds);
+    } else {
+      spdlog::error("{}: {}", model->input_path.string(), result.error);
+    }
+    if (options_.on_model_done) options_.on_model_done(*model, result);
+    {
+      std::lock_guard lock(active_mutex_);
+      active_.erase(model.get());
+    }
+    done_.fetch_add(1);
+    start_next();
+  }
+
+  void progress_loop() {
+    std::unique_lock lock(progress_mutex_);
+    while (!progress_cv_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_progress_; })) {
+      long live = 0;
+      {
+        std::lock_guard active_lock(active_mutex_);
+        for (const ModelRun* m : active_) live += m->in_flight.load();
+      }
+      spdlog::info("progress: {}/{} models done, {} messages live", done_.load(),
+                   inputs_.size(), live);
+    }
+  }
+
+  const PipelineConfig& config_;
+  const std::vector<std::filesystem::path>& inputs_;
+  std::vector<std::string> names_;
+  std::shared_ptr<const RunSettings> settings_;
+  const PipelineOptions& options_;
+  std::vector<ModelResult> results_;
+
+  std::vector<const NodeSpec*> specs_;
+  std::vector<std::shared_ptr<NodeBody>> bodies_;
+  std::vector<std::unique_ptr<FlowNode>> nodes_;
+  std::vector<std::unique_ptr<GatherNode>> gathers_;
+  std::vector<int> gather_of_node_;
+  std::vector<int> gather_order_;
+
+  std::size_t max_in_flight_ = 1;
+  std::atomic<std::size_t> next_input_{0};
+  std::atomic<std::size_t> done_{0};
+  std::mutex active_mutex_;
+  std::set<const ModelRun*> active_;
+  std::mutex progress_mutex_;
+  std::condition_variable progress_cv_;
+  bool stop_progress_ = false;
+};
+
+}  // namespace
+
+std::vector<ModelResult> Pipeline::run(const std::vector<std::filesystem::path>& inputs,
+                                       std::shared_ptr<const RunSettings> settings,
+                                       const PipelineOptions& options) {
+  if (inputs.empty()) return {};
+  Execution execution(config_, registry_, inputs, std::move(settings), options);
+  return execution.run();
+}
+
+}  // namespace papercraft

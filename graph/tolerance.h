@@ -1,0 +1,20 @@
+#pragma once
+// The user tolerance: relative ("2%" of the largest bounding-box side) or absolute (0.004).
+
+#include <string>
+
+namespace papercraft {
+
+struct ToleranceSpec {
+  double value = 0.02;
+  bool relative = true;  // value is a fraction of the largest side
+
+  double absolute(double largest_side) const { return relative ? value * largest_side : value; }
+  std::string to_string() const;
+};
+
+/// "2%" -> {0.02, relative}; "0.004" -> {0.004, absolute}. Throws std::invalid_argument
+/// ("expected a tolerance like 2% or 0.004") on anything else or a value <= 0.
+ToleranceSpec parse_tolerance(const std::string& text);
+
+}  // namespace papercraft
