@@ -1,0 +1,673 @@
+#include "nodes/load/openmesh.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/errors.h"
+#include "core/mesh.h"
+
+namespace papercraft {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Tetrahedron with outward (counter-clockwise seen from outside) faces.
+const double kTetraPoints[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const int kTetraFaces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+
+void put_u8(std::string& out, std::uint8_t value) {
+  out.push_back(static_cast<char>(value));
+}
+void put_u32(std::string& out, std::uint32_t value, bool big_endian = false) {
+  for (int i = 0; i < 4; ++i) {
+    const int shift = big_endian ? 8 * (3 - i) : 8 * i;
+    out.push_back(static_cast<char>((value >> shift) & 0xffu));
+  }
+}
+void put_f32(std::string& out, float value, bool big_endian = false) {
+  std::uint32_t bits = 0;
+  std::memcpy(&bits, &value, sizeof bits);
+  put_u32(out, bits, big_endian);
+}
+
+std::string tetra_off(const std::string& extra_vertices = "", const std::string& extra_faces = "",
+                      int added_vertices = 0, int added_faces = 0) {
+  std::string text =
+      "OFF\n" + std::to_string(4 + added_vertices) + " " + std::to_string(4 + added_faces) + " 0\n";
+  for (const auto& p : kTetraPoints) {
+    text += std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+  }
+  text += extra_vertices;
+  for (const auto& f : kTetraFaces) {
+    text += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) +
+            "\n";
+  }
+  return text + extra_faces;
+}
+
+std::string tetra_ply_binary(bool big_endian, const std::string& header_extra = "") {
+  std::string data = std::string("ply\nformat ") +
+                     (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                     " 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                     "property float z\nelement face 4\nproperty list uchar int vertex_indices\n" +
+                     header_extra + "end_header\n";
+  for (const auto& p : kTetraPoints) {
+    for (double c : p) put_f32(data, static_cast<float>(c), big_endian);
+  }
+  for (const auto& f : kTetraFaces) {
+    put_u8(data, 3);
+    for (int i : f) put_u32(data, static_cast<std::uint32_t>(i), big_endian);
+  }
+  return data;
+}
+
+std::string tetra_stl_binary(const std::string& header) {
+  std::string data = header;
+  data.resize(80, ' ');
+  put_u32(data, 4);
+  for (const auto& f : kTetraFaces) {
+    for (int i = 0; i < 3; ++i) put_f32(data, 0.0f);
+    for (int corner : f) {
+      for (double c : kTetraPoints[corner]) put_f32(data, static_cast<float>(c));
+    }
+    data += std::string(2, '\0');
+  }
+  return data;
+}
+
+int input_vertex_of(const Mesh& mesh, Mesh::VertexHandle v) {
+  OpenMesh::VPropHandleT<int> handle;
+  if (!mesh.get_property_handle(handle, "v:input_vertex")) {
+    ADD_FAILURE() << "no v:input_vertex property";
+    return -1;
+  }
+  return mesh.property(handle, v);
+}
+
+class LoadOpenMeshTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    static std::atomic<int> counter{0};
+    dir_ = fs::temp_directory_path() /
+           ("papercraft_load_test_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  fs::path write(const std::string& name, const std::string& content) {
+    const fs::path path = dir_ / name;
+    fs::create_directories(path.parent_path());
+    std::ofstream out(path, std::ios::binary);
+    out << content;
+    return path;
+  }
+
+  // Loads `path`, expecting exception E whose message starts with the path and contains every
+  // key; returns the message.
+  template <class E>
+  std::string expect_error(const fs::path& path, std::initializer_list<const char*> keys,
+                           const LoadOptions& options = {}) {
+    std::string message;
+    try {
+      load_mesh(path, options);
+      ADD_FAILURE() << "no exception for " << path;
+      return {};
+    } catch (const E& error) {
+      message = error.what();
+    } catch (const std::exception& error) {
+      ADD_FAILURE() << "wrong exception type for " << path << ": " << error.what();
+      return {};
+    }
+    EXPECT_EQ(message.rfind(path.string(), 0), 0u) << message;
+    for (const char* key : keys) {
+      EXPECT_NE(message.find(key), std::string::npos) << "'" << key << "' not in: " << message;
+    }
+    return message;
+  }
+
+  static void expect_closed_tetrahedron(const LoadedMesh& loaded) {
+    EXPECT_EQ(loaded.mesh.n_vertices(), 4u);
+    EXPECT_EQ(loaded.mesh.n_faces(), 4u);
+    EXPECT_EQ(loaded.mesh.n_edges(), 6u);
+    EXPECT_TRUE(boundary_loops(loaded.mesh).empty());
+    EXPECT_EQ(euler_characteristic(loaded.mesh), 2);
+    // Outward orientation: positive signed volume 1/6.
+    double volume = 0.0;
+    for (auto f : loaded.mesh.faces()) {
+      std::vector<OpenMesh::Vec3d> p;
+      for (auto v : f.vertices()) p.push_back(loaded.mesh.point(v));
+      volume += OpenMesh::dot(p[0], OpenMesh::cross(p[1], p[2])) / 6.0;
+    }
+    EXPECT_NEAR(volume, 1.0 / 6.0, 1e-12);
+  }
+
+  fs::path dir_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Good files
+
+TEST_F(LoadOpenMeshTest, ObjWithTextureCoordinatesAndMaterial) {
+  write("materials/wood.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd textures/wood.png\n");
+  const fs::path path = write("tetra.obj",
+                              "# tetrahedron\nmtllib materials/wood.mtl\n"
+                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                              "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+                              "usemtl wood\n"
+                              "f 1/1 3/3 2/2\nf 1/1 2/2 4/4\nf 1/1 4/4 3/3\nf 2/2 3/3 4/4\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  EXPECT_TRUE(loaded.has_uvs);
+  EXPECT_EQ(loaded.uv_seam_vertices, 0u);
+  ASSERT_TRUE(loaded.mesh.has_vertex_texcoords2D());
+  EXPECT_FALSE(loaded.mesh.has_halfedge_texcoords2D());
+  EXPECT_EQ(loaded.mesh.texcoord2D(Mesh::VertexHandle(1)), OpenMesh::Vec2d(1, 0));
+  EXPECT_EQ(loaded.mesh.texcoord2D(Mesh::VertexHandle(3)), OpenMesh::Vec2d(1, 1));
+  EXPECT_EQ(fs::path(loaded.texture_path), dir_ / "materials/textures/wood.png");
+  EXPECT_TRUE(loaded.repairs.empty());
+  EXPECT_EQ(loaded.input_vertices, 4u);
+  EXPECT_EQ(loaded.input_faces, 4u);
+  for (auto v : loaded.mesh.vertices()) EXPECT_EQ(input_vertex_of(loaded.mesh, v), v.idx());
+}
+
+TEST_F(LoadOpenMeshTest, ObjUvSeamKeepsVerticesAndStoresCornerUvs) {
+  // Vertex 1 (OBJ 1) has a different UV in the last face that touches it.
+  const fs::path path = write("seam.obj",
+                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                              "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n"
+                              "f 1/1 3/3 2/2\nf 1/1 2/2 4/4\nf 1/5 4/4 3/3\nf 2/2 3/3 4/4\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  EXPECT_TRUE(loaded.has_uvs);
+  EXPECT_EQ(loaded.uv_seam_vertices, 1u);
+  ASSERT_TRUE(loaded.mesh.has_halfedge_texcoords2D());
+  int seam_corners = 0;
+  for (auto h : loaded.mesh.halfedges()) {
+    if (!h.is_boundary() && h.to().idx() == 0 &&
+        loaded.mesh.texcoord2D(h) == OpenMesh::Vec2d(0.5, 0.5)) {
+      ++seam_corners;
+    }
+  }
+  EXPECT_EQ(seam_corners, 1);
+}
+
+TEST_F(LoadOpenMeshTest, ObjQuadsAreTriangulated) {
+  const fs::path path = write("cube.obj",
+                              "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                              "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                              "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  const LoadedMesh loaded = load_mesh(path);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 8u);
+  EXPECT_EQ(loaded.mesh.n_faces(), 12u);
+  EXPECT_TRUE(boundary_loops(loaded.mesh).empty());
+  EXPECT_EQ(euler_characteristic(loaded.mesh), 2);
+  EXPECT_EQ(loaded.input_faces, 6u);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0], "triangulated 6 polygons into 12 triangles");
+  EXPECT_FALSE(loaded.has_uvs);
+}
+
+TEST_F(LoadOpenMeshTest, ObjQuadWithTextureCoordinates) {
+  const fs::path path = write("quad.obj",
+                              "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\n"
+                              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                              "f 1/1 2/2 3/3 4/4\n");
+  const LoadedMesh loaded = load_mesh(path);
+  EXPECT_EQ(loaded.mesh.n_faces(), 2u);
+  EXPECT_EQ(boundary_loops(loaded.mesh).size(), 1u);
+  ASSERT_TRUE(loaded.has_uvs);
+  EXPECT_EQ(loaded.uv_seam_vertices, 0u);
+  for (auto v : loaded.mesh.vertices()) {
+    const OpenMesh::Vec3d p = loaded.mesh.point(v);
+    EXPECT_EQ(loaded.mesh.texcoord2D(v), OpenMesh::Vec2d(p[0] / 2, p[1]));
+  }
+}
+
+TEST_F(LoadOpenMeshTest, OffAscii) {
+  const LoadedMesh loaded = load_mesh(write("tetra.off", tetra_off()));
+  expect_closed_tetrahedron(loaded);
+  EXPECT_TRUE(loaded.repairs.empty());
+  EXPECT_FALSE(loaded.has_uvs);
+}
+
+TEST_F(LoadOpenMeshTest, OffBinary) {
+  std::string data = "OFF BINARY\n";
+  put_u32(data, 4);
+  put_u32(data, 4);
+  put_u32(data, 0);
+  for (const auto& p : kTetraPoints) {
+    for (double c : p) put_f32(data, static_cast<float>(c));
+  }
+  for (const auto& f : kTetraFaces) {
+    put_u32(data, 3);
+    for (int i : f) put_u32(data, static_cast<std::uint32_t>(i));
+  }
+  expect_closed_tetrahedron(load_mesh(write("binary.off", data)));
+  expect_error<InvalidInputException>(write("cut_binary.off", data.substr(0, data.size() - 4)),
+                                      {"truncated"});
+}
+
+TEST_F(LoadOpenMeshTest, ExtensionIsCaseInsensitive) {
+  expect_closed_tetrahedron(load_mesh(write("TETRA.OFF", tetra_off())));
+}
+
+TEST_F(LoadOpenMeshTest, PlyAsciiWithVertexUvsAndTexture) {
+  const fs::path path = write("tetra.ply",
+                              "ply\nformat ascii 1.0\ncomment TextureFile skin.png\n"
+                              "element vertex 4\nproperty float x\nproperty float y\n"
+                              "property float z\nproperty float u\nproperty float v\n"
+                              "element face 4\nproperty list uchar int vertex_indices\n"
+                              "end_header\n"
+                              "0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  EXPECT_TRUE(loaded.has_uvs);
+  EXPECT_EQ(loaded.uv_seam_vertices, 0u);
+  EXPECT_EQ(loaded.mesh.texcoord2D(Mesh::VertexHandle(2)), OpenMesh::Vec2d(0, 1));
+  EXPECT_EQ(fs::path(loaded.texture_path), dir_ / "skin.png");
+}
+
+TEST_F(LoadOpenMeshTest, PlyBinaryLittleAndBigEndian) {
+  expect_closed_tetrahedron(load_mesh(write("little.ply", tetra_ply_binary(false))));
+  expect_closed_tetrahedron(load_mesh(write("big.ply", tetra_ply_binary(true))));
+}
+
+TEST_F(LoadOpenMeshTest, StlAsciiIsWelded) {
+  std::string text = "solid tetra\n";
+  for (const auto& f : kTetraFaces) {
+    text += "  facet normal 0 0 0\n    outer loop\n";
+    for (int corner : f) {
+      const auto& p = kTetraPoints[corner];
+      text += "      vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " +
+              std::to_string(p[2]) + "\n";
+    }
+    text += "    endloop\n  endfacet\n";
+  }
+  text += "endsolid tetra\n";
+  const LoadedMesh loaded = load_mesh(write("tetra.stl", text));
+  expect_closed_tetrahedron(loaded);
+  EXPECT_EQ(loaded.input_vertices, 12u);
+  EXPECT_EQ(loaded.input_faces, 4u);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_NE(loaded.repairs[0].find("merged 8 exactly duplicate vertices"), std::string::npos);
+}
+
+TEST_F(LoadOpenMeshTest, StlBinaryIsWelded) {
+  const LoadedMesh loaded = load_mesh(write("tetra.stl", tetra_stl_binary("binary tetrahedron")));
+  expect_closed_tetrahedron(loaded);
+  EXPECT_EQ(loaded.input_vertices, 12u);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_NE(loaded.repairs[0].find("merged 8 exactly duplicate vertices"), std::string::npos);
+}
+
+TEST_F(LoadOpenMeshTest, StlBinaryWhoseHeaderStartsWithSolid) {
+  expect_closed_tetrahedron(
+      load_mesh(write("solid.stl", tetra_stl_binary("solid but actually binary"))));
+}
+
+TEST_F(LoadOpenMeshTest, OpenSurfaceKeepsItsBoundary) {
+  const fs::path path =
+      write("open.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n");
+  const LoadedMesh loaded = load_mesh(path);
+  EXPECT_EQ(loaded.mesh.n_faces(), 3u);
+  EXPECT_EQ(boundary_loops(loaded.mesh).size(), 1u);
+  EXPECT_TRUE(loaded.repairs.empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Repairs
+
+TEST_F(LoadOpenMeshTest, UnreferencedVertexIsRemovedAndReported) {
+  const fs::path path = write("unreferenced.off", tetra_off("5 5 5\n", "", 1, 0));
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0], "removed 1 unreferenced vertex");
+  EXPECT_EQ(loaded.input_vertices, 5u);
+
+  LoadOptions keep;
+  keep.repair = false;
+  const LoadedMesh kept = load_mesh(path, keep);
+  EXPECT_EQ(kept.mesh.n_vertices(), 5u);
+  EXPECT_TRUE(kept.repairs.empty());
+}
+
+TEST_F(LoadOpenMeshTest, InputVertexPropertyFollowsRemovals) {
+  // The unreferenced vertex comes first, so every kept vertex moves down by one.
+  const fs::path path = write("shifted.off",
+                              "OFF\n5 4 0\n9 9 9\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                              "3 1 3 2\n3 1 2 4\n3 1 4 3\n3 2 3 4\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  for (auto v : loaded.mesh.vertices()) EXPECT_EQ(input_vertex_of(loaded.mesh, v), v.idx() + 1);
+}
+
+TEST_F(LoadOpenMeshTest, ExactDuplicateVerticesAreMergedAndReported) {
+  // A triangle soup: every face has its own three vertices.
+  std::string text;
+  for (const auto& f : kTetraFaces) {
+    for (int corner : f) {
+      const auto& p = kTetraPoints[corner];
+      text += "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " +
+              std::to_string(p[2]) + "\n";
+    }
+  }
+  text += "f 1 2 3\nf 4 5 6\nf 7 8 9\nf 10 11 12\n";
+  const fs::path path = write("soup.obj", text);
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0], "merged 8 exactly duplicate vertices");
+
+  LoadOptions keep;
+  keep.repair = false;
+  const LoadedMesh kept = load_mesh(path, keep);
+  EXPECT_EQ(kept.mesh.n_vertices(), 12u);
+  EXPECT_EQ(boundary_loops(kept.mesh).size(), 4u);
+}
+
+TEST_F(LoadOpenMeshTest, NearDuplicatesMergeOnlyWithinEpsilon) {
+  const fs::path path = write("near.off",
+                              "OFF\n5 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0.0001 0 0\n"
+                              "3 0 2 1\n3 0 1 3\n3 4 3 2\n3 1 2 3\n");
+  const LoadedMesh exact = load_mesh(path);
+  EXPECT_EQ(exact.mesh.n_vertices(), 5u);
+  EXPECT_EQ(boundary_loops(exact.mesh).size(), 1u);
+
+  LoadOptions welding;
+  welding.duplicate_vertex_epsilon = 0.001;
+  const LoadedMesh welded = load_mesh(path, welding);
+  EXPECT_EQ(welded.mesh.n_vertices(), 4u);
+  EXPECT_TRUE(boundary_loops(welded.mesh).empty());
+  ASSERT_EQ(welded.repairs.size(), 1u);
+  EXPECT_NE(welded.repairs[0].find("merged 1 duplicate vertex (within 0.001)"), std::string::npos);
+}
+
+TEST_F(LoadOpenMeshTest, InconsistentOrientationIsRepairedOrRefused) {
+  // Face 3 reversed.
+  const fs::path path = write("flipped_face.off",
+                              "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 3 2\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0], "reoriented 1 face to agree with their neighbours");
+
+  LoadOptions keep;
+  keep.repair = false;
+  expect_error<InvalidInputException>(path, {"not consistently oriented", "faces"}, keep);
+}
+
+TEST_F(LoadOpenMeshTest, ReorientationKeepsTheMajorityOrientation) {
+  // An open surface (no volume to decide by) whose first face disagrees with the other two.
+  const fs::path path = write(
+      "open_flipped.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 0 3 2\n");
+  const LoadedMesh loaded = load_mesh(path);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0], "reoriented 1 face to agree with their neighbours");
+  // Face 1 kept its orientation 0 -> 1 -> 3.
+  std::vector<int> corners;
+  for (auto v : loaded.mesh.fv_range(Mesh::FaceHandle(1))) corners.push_back(v.idx());
+  std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+  EXPECT_EQ(corners, (std::vector<int>{0, 1, 3}));
+}
+
+TEST_F(LoadOpenMeshTest, ConcurrentLoadsAreIndependent) {
+  std::vector<fs::path> paths;
+  for (int i = 0; i < 4; ++i) {
+    paths.push_back(write("c" + std::to_string(i) + ".ply", tetra_ply_binary(i % 2 == 1)));
+    paths.push_back(write("c" + std::to_string(i) + ".off", tetra_off()));
+  }
+  std::vector<std::size_t> faces(paths.size(), 0);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    threads.emplace_back([&, i] {
+      for (int repeat = 0; repeat < 20; ++repeat) faces[i] += load_mesh(paths[i]).mesh.n_faces();
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (std::size_t count : faces) EXPECT_EQ(count, 80u);
+}
+
+TEST_F(LoadOpenMeshTest, InsideOutClosedComponentIsFlipped) {
+  const fs::path path = write("inside_out.off",
+                              "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                              "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0], "flipped 1 closed component that faced inwards (4 faces)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad files
+
+TEST_F(LoadOpenMeshTest, MissingFile) {
+  expect_error<IOException>(dir_ / "missing.obj", {"missing.obj", "no such file"});
+}
+
+TEST_F(LoadOpenMeshTest, UnknownExtension) {
+  expect_error<InvalidInputException>(write("mesh.xyz", tetra_off()),
+                                      {"unknown extension", ".xyz"});
+}
+
+TEST_F(LoadOpenMeshTest, EmptyFile) {
+  expect_error<InvalidInputException>(write("empty.obj", ""), {"empty"});
+  expect_error<InvalidInputException>(write("empty.stl", ""), {"empty"});
+}
+
+TEST_F(LoadOpenMeshTest, ZeroFaces) {
+  expect_error<InvalidInputException>(write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n"),
+                                      {"no faces", "3 vertices"});
+  expect_error<InvalidInputException>(write("points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"),
+                                      {"no faces"});
+  expect_error<InvalidInputException>(
+      write("points.ply",
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+            "property float z\nend_header\n0 0 0\n"),
+      {"no faces"});
+}
+
+TEST_F(LoadOpenMeshTest, TruncatedOff) {
+  // The header promises 4 faces, there are 2: OpenMesh alone would repeat the last one.
+  const std::string full = tetra_off();
+  const std::string truncated = full.substr(0, full.rfind("3 0 3 2"));
+  expect_error<InvalidInputException>(write("truncated.off", truncated),
+                                      {"truncated", "4 faces", "2 face lines"});
+}
+
+TEST_F(LoadOpenMeshTest, OffWithMoreDataThanDeclared) {
+  expect_error<InvalidInputException>(write("extra.off", tetra_off("", "3 1 2 0\n")),
+                                      {"more data follows", "line 11"});
+}
+
+TEST_F(LoadOpenMeshTest, TruncatedBinaryPly) {
+  const std::string full = tetra_ply_binary(false);
+  expect_error<InvalidInputException>(write("cut.ply", full.substr(0, full.size() - 10)),
+                                      {"truncated", "4 faces"});
+  // Exactly enough bytes for the shortest faces, but the last face claims 5 vertices.
+  std::string longer = full;
+  longer[longer.size() - 13] = 5;
+  expect_error<InvalidInputException>(write("long_face.ply", longer),
+                                      {"truncated", "face 3 (of 4)"});
+}
+
+TEST_F(LoadOpenMeshTest, TruncatedAsciiPly) {
+  expect_error<InvalidInputException>(
+      write("cut_ascii.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+            "end_header\n0.0 0.0 0.0\n1.0 0.0 0.0\n0.0 1.0 0.0\n0.0 0.0 1.0\n"
+            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2\n"),
+      {"truncated", "face 3"});
+}
+
+TEST_F(LoadOpenMeshTest, HugePlyHeaderFailsFast) {
+  const fs::path path =
+      write("huge.ply",
+            "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
+            "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+            "property list uchar int vertex_indices\nend_header\n" +
+                std::string(100, '\0'));
+  const auto start = std::chrono::steady_clock::now();
+  expect_error<InvalidInputException>(path, {"truncated", "4000000000 vertices"});
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 0.2);
+
+  const fs::path ascii = write("huge_ascii.off", "OFF\n4000000000 4000000000 0\n0 0 0\n");
+  expect_error<InvalidInputException>(ascii, {"truncated", "4000000000 faces"});
+}
+
+TEST_F(LoadOpenMeshTest, HugeBinaryStlCountIsNotBinary) {
+  std::string data = tetra_stl_binary("binary");
+  data[80] = data[81] = data[82] = data[83] = '\xff';
+  expect_error<InvalidInputException>(write("huge.stl", data),
+                                      {"not an STL", "4294967295 triangles"});
+}
+
+TEST_F(LoadOpenMeshTest, FaceLimit) {
+  LoadOptions small;
+  small.max_faces = 3;
+  expect_error<InvalidInputException>(write("limit.off", tetra_off()), {"max_faces", "4 faces"},
+                                      small);
+}
+
+TEST_F(LoadOpenMeshTest, NaNCoordinates) {
+  expect_error<InvalidInputException>(
+      write("nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\n"),
+      {"non-finite", "'nan'", "line 2", "vertex 1"});
+  std::string ply = tetra_ply_binary(false);
+  const std::size_t data = ply.find("end_header\n") + 11;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(&ply[data + 12], &nan, 4);  // vertex 1, x
+  expect_error<InvalidInputException>(write("nan.ply", ply), {"non-finite", "first vertex 1"});
+  std::string stl = tetra_stl_binary("binary");
+  std::memcpy(&stl[84 + 12], &nan, 4);
+  expect_error<InvalidInputException>(write("nan.stl", stl), {"non-finite", "triangle 0"});
+}
+
+TEST_F(LoadOpenMeshTest, InfiniteCoordinates) {
+  expect_error<InvalidInputException>(write("inf.off",
+                                            "OFF\n4 4 0\n0 0 0\ninf 0 0\n0 1 0\n0 0 1\n"
+                                            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+                                      {"non-finite", "'inf'", "line 4"});
+  expect_error<InvalidInputException>(write("big.obj", "v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n"),
+                                      {"non-finite", "'1e39'"});
+  std::string ply = tetra_ply_binary(false);
+  const std::size_t data = ply.find("end_header\n") + 11;
+  const float inf = std::numeric_limits<float>::infinity();
+  std::memcpy(&ply[data + 8], &inf, 4);  // vertex 0, z
+  expect_error<InvalidInputException>(write("inf.ply", ply), {"non-finite", "first vertex 0"});
+}
+
+TEST_F(LoadOpenMeshTest, OutOfRangeIndex) {
+  expect_error<InvalidInputException>(write("range.off",
+                                            "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+                                            "3 0 2 1\n3 0 1 3\n3 0 3 7\n3 1 2 3\n"),
+                                      {"out-of-range", "face 2", "vertex 7", "4 vertices"});
+  expect_error<InvalidInputException>(write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
+                                      {"out-of-range", "vertex 8"});
+}
+
+TEST_F(LoadOpenMeshTest, EdgeSharedByThreeFaces) {
+  // Three triangles hinge on edge 0-1.
+  expect_error<InvalidInputException>(write("fin.off",
+                                            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n"
+                                            "3 0 1 2\n3 1 0 3\n3 0 1 4\n"),
+                                      {"1 non-manifold edge", "vertices 0-1", "faces 0, 1, 2"});
+}
+
+TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
+  // Two closed tetrahedra that share only vertex 0.
+  expect_error<InvalidInputException>(
+      write("bowtie.off",
+            "OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n"
+            "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+            "3 0 5 4\n3 0 4 6\n3 0 6 5\n3 4 5 6\n"),
+      {"1 non-manifold vertex", "first vertex 0"});
+}
+
+TEST_F(LoadOpenMeshTest, DegenerateFaces) {
+  // Collinear corners.
+  expect_error<InvalidInputException>(
+      write("collinear.off", tetra_off("2 0 0\n3 0 0\n", "3 1 4 5\n", 2, 1)),
+      {"1 degenerate (zero-area) face", "first face 4", "vertices 1, 4, 5"});
+  // A repeated corner.
+  expect_error<InvalidInputException>(write("repeated.off", tetra_off("", "3 1 2 2\n", 0, 1)),
+                                      {"degenerate", "face 4"});
+  expect_error<InvalidInputException>(
+      write("repeated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"),
+      {"1 degenerate face", "line 5"});
+  // Two corners of an STL triangle coincide (OpenMesh alone would drop it silently).
+  std::string stl = tetra_stl_binary("binary");
+  std::memcpy(&stl[84 + 50 * 2 + 24], &stl[84 + 50 * 2 + 12], 12);
+  expect_error<InvalidInputException>(write("degenerate.stl", stl),
+                                      {"1 degenerate face", "triangle 2"});
+}
+
+TEST_F(LoadOpenMeshTest, DuplicateFace) {
+  expect_error<InvalidInputException>(write("twice.off", tetra_off("", "3 0 1 2\n", 0, 1)),
+                                      {"1 duplicate face", "face 4 repeats face 0"});
+}
+
+TEST_F(LoadOpenMeshTest, NonConvexPolygon) {
+  // An L-shaped hexagon whose fan from the first corner folds over.
+  expect_error<InvalidInputException>(
+      write("ell.obj",
+            "v 1 1 0\nv 0 1 0\nv 0 0 0\nv 2 0 0\nv 2 0.5 0\nv 1 0.5 0\n"
+            "f 1 2 3 4 5 6\n"),
+      {"non-convex", "first face 0"});
+}
+
+TEST_F(LoadOpenMeshTest, LayoutsOpenMeshWouldMisread) {
+  // A comment right before end_header shifts OpenMesh's binary data by one byte.
+  expect_error<InvalidInputException>(
+      write("comment.ply", tetra_ply_binary(false, "comment made by hand\n")),
+      {"misplace the binary data"});
+  // Face colors without a COFF header would be read as the next face's vertex count.
+  std::string colored = tetra_off();
+  colored.replace(colored.find("3 0 2 1\n"), 8, "3 0 2 1 255 0 0\n");
+  expect_error<InvalidInputException>(write("colors.off", colored),
+                                      {"line 7", "face colors need a COFF header"});
+  // A list OpenMesh cannot skip.
+  expect_error<InvalidInputException>(
+      write("texcoord_list.ply",
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+            "property list uchar float texcoord\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+            "3 0 1 2 6 0 0 1 0 0 1\n"),
+      {"line 9", "texcoord", "not supported"});
+}
+
+TEST_F(LoadOpenMeshTest, StlTruncated) {
+  std::string ascii =
+      "solid t\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n"
+      "   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\n";
+  expect_error<InvalidInputException>(write("no_end.stl", ascii), {"truncated", "endsolid"});
+  expect_error<InvalidInputException>(write("mid_facet.stl", ascii.substr(0, 57)), {"truncated"});
+  const std::string binary = tetra_stl_binary("binary");
+  expect_error<InvalidInputException>(write("cut.stl", binary.substr(0, binary.size() - 7)),
+                                      {"not an STL", "4 triangles", "284 bytes"});
+}
+
+}  // namespace
+}  // namespace papercraft
