@@ -1,0 +1,192 @@
+#include "nodes/select/geodesic.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <string>
+#include <utility>
+
+#include "core/errors.h"
+
+namespace papercraft {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A strip boundary candidate: a loop or one vertex, with the graph distances from it.
+struct BoundaryCandidate {
+  std::vector<int> vertices;
+  bool closed = false;
+  std::vector<double> distances;
+};
+
+void check_part(const Mesh& part) {
+  if (part.n_faces() == 0) throw InvalidInputException("boundary selection: the part has no face");
+}
+
+// The vertex of largest finite distance (lowest index on ties), or -1 if none is finite.
+int farthest_vertex(const std::vector<double>& distances) {
+  int best = -1;
+  for (int v = 0; v < static_cast<int>(distances.size()); ++v) {
+    if (std::isfinite(distances[v]) && (best < 0 || distances[v] > distances[best])) best = v;
+  }
+  return best;
+}
+
+double distance_to(const std::vector<double>& distances, const std::vector<int>& vertices) {
+  double nearest = kInfinity;
+  for (int v : vertices) nearest = std::min(nearest, distances[v]);
+  return nearest;
+}
+
+BoundarySelection selection_of(const BoundaryCandidate& first, const BoundaryCandidate& second) {
+  return {first.vertices, second.vertices, first.closed, second.closed};
+}
+
+BoundarySelection closed_part_selection(const Mesh& part, int sweeps) {
+  int current = 0;
+  int best_from = 0;
+  int best_to = 0;
+  double best_distance = -1.0;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    const auto distances = edge_graph_distances(part, {current});
+    const int far = farthest_vertex(distances);
+    if (distances[far] > best_distance) {
+      best_distance = distances[far];
+      best_from = current;
+      best_to = far;
+    }
+    if (far == current) break;
+    current = far;
+  }
+  return {{best_from}, {best_to}, false, false};
+}
+
+BoundarySelection one_loop_selection(const Mesh& part, const std::vector<int>& loop) {
+  const int far = farthest_vertex(edge_graph_distances(part, loop));
+  return {loop, {far}, true, false};
+}
+
+// Loops first (boundary_loops order), then each loop's farthest vertex that is not on a loop.
+std::vector<BoundaryCandidate> boundary_candidates(const Mesh& part,
+                                                   const std::vector<std::vector<int>>& loops) {
+  std::vector<char> on_boundary(part.n_vertices(), 0);
+  for (const auto& loop : loops) {
+    for (int v : loop) on_boundary[v] = 1;
+  }
+  std::vector<BoundaryCandidate> candidates;
+  for (const auto& loop : loops) {
+    candidates.push_back({loop, true, edge_graph_distances(part, loop)});
+  }
+  const std::size_t loop_count = candidates.size();
+  for (std::size_t k = 0; k < loop_count; ++k) {
+    const int far = farthest_vertex(candidates[k].distances);
+    if (far < 0 || on_boundary[far]) continue;
+    on_boundary[far] = 1;  // each vertex once
+    candidates.push_back({{far}, false, edge_graph_distances(part, {far})});
+  }
+  return candidates;
+}
+
+}  // namespace
+
+std::vector<double> edge_graph_distances(const Mesh& mesh, const std::vector<int>& sources) {
+  if (sources.empty()) throw InvalidInputException("edge_graph_distances: no source vertex");
+  const int count = static_cast<int>(mesh.n_vertices());
+  std::vector<double> distances(count, kInfinity);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (int source : sources) {
+    if (source < 0 || source >= count) {
+      throw InvalidInputException("edge_graph_distances: source vertex " + std::to_string(source) +
+                                  " is not in the mesh (" + std::to_string(count) + " vertices)");
+    }
+    if (distances[source] > 0.0) {
+      distances[source] = 0.0;
+      queue.emplace(0.0, source);
+    }
+  }
+  while (!queue.empty()) {
+    const auto [distance, v] = queue.top();
+    queue.pop();
+    if (distance > distances[v]) continue;
+    const auto vertex = mesh.vertex_handle(v);
+    const auto& point = mesh.point(vertex);
+    for (auto halfedge : mesh.voh_range(vertex)) {
+      const auto neighbour = halfedge.to();
+      const double through = distance + (mesh.point(neighbour) - point).norm();
+      if (through < distances[neighbour.idx()]) {
+        distances[neighbour.idx()] = through;
+        queue.emplace(through, neighbour.idx());
+      }
+    }
+  }
+  return distances;
+}
+
+BoundarySelection select_geodesic(const Mesh& part, const GeodesicSelectOptions& options) {
+  check_part(part);
+  if (options.sweeps < 1) {
+    throw InvalidInputException("select.geodesic: sweeps must be at least 1, got " +
+                                std::to_string(options.sweeps));
+  }
+  const auto loops = boundary_loops(part);
+  if (loops.empty()) return closed_part_selection(part, options.sweeps);
+  if (loops.size() == 1) return one_loop_selection(part, loops.front());
+
+  const auto candidates = boundary_candidates(part, loops);
+  std::size_t best_first = 0;
+  std::size_t best_second = 1;
+  double best_distance = -1.0;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    for (std::size_t j = i + 1; j < candidates.size(); ++j) {
+      const double distance = distance_to(candidates[i].distances, candidates[j].vertices);
+      if (std::isfinite(distance) && distance > best_distance) {
+        best_distance = distance;
+        best_first = i;
+        best_second = j;
+      }
+    }
+  }
+  return selection_of(candidates[best_first], candidates[best_second]);
+}
+
+std::vector<BoundarySelection> candidate_selections(const Mesh& part) {
+  check_part(part);
+  const auto loops = boundary_loops(part);
+  if (loops.size() < 2) return {select_geodesic(part)};
+  const auto candidates = boundary_candidates(part, loops);
+  std::vector<BoundarySelection> selections;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    for (std::size_t j = i + 1; j < candidates.size(); ++j) {
+      selections.push_back(selection_of(candidates[i], candidates[j]));
+    }
+  }
+  return selections;
+}
+
+Polyline selection_polyline(const Mesh& part, const std::vector<int>& vertices, bool closed) {
+  if (vertices.empty()) throw InvalidInputException("selection_polyline: no vertex");
+  const bool with_uvs = part.has_vertex_texcoords2D();
+  Polyline polyline;
+  polyline.closed = closed;
+  polyline.points.reserve(vertices.size());
+  for (int v : vertices) {
+    if (v < 0 || v >= static_cast<int>(part.n_vertices())) {
+      throw InvalidInputException("selection_polyline: vertex " + std::to_string(v) +
+                                  " is not in the part (" + std::to_string(part.n_vertices()) +
+                                  " vertices)");
+    }
+    const auto vertex = part.vertex_handle(v);
+    polyline.points.push_back(to_eigen(part.point(vertex)));
+    if (with_uvs) {
+      const auto& uv = part.texcoord2D(vertex);
+      polyline.uvs.emplace_back(uv[0], uv[1]);
+    }
+  }
+  return polyline;
+}
+
+}  // namespace papercraft
