@@ -1,0 +1,303 @@
+#include "nodes/merge/congruent.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "core/errors.h"
+#include "nodes/unfold/flat_boundary.h"
+#include "nodes/unfold/overlap.h"
+#include "nodes/unfold/seams.h"
+
+namespace papercraft {
+namespace {
+
+// A shared boundary of strips X and Y: x[i] in X and y[i] in Y are the same 3D point.
+struct Chain {
+  std::vector<int> x;
+  std::vector<int> y;
+  double length = 0.0;
+};
+
+struct PairCandidate {
+  int x = -1;  // strip indices, x < y
+  int y = -1;
+  std::vector<Chain> chains;
+  double total_length = 0.0;
+};
+
+struct RigidMotion {
+  double cos = 1.0, sin = 0.0;
+  Vec2 translation = Vec2::Zero();
+  Vec2 operator()(const Vec2& p) const {
+    return Vec2(cos * p.x() - sin * p.y(), sin * p.x() + cos * p.y()) + translation;
+  }
+};
+
+void validate(const std::vector<FlatStrip>& strips, const MergeOptions& options) {
+  if (!(options.congruence_tolerance >= 0.0) || !(options.overlap_tolerance >= 0.0))
+    throw InvalidInputException("merge: tolerances must be >= 0");
+  for (const FlatStrip& strip : strips) {
+    const std::size_t n = strip.vertices3d.size();
+    std::string name = "merge: flat strip " + std::to_string(strip.id);
+    if (strip.vertices2d.size() != n)
+      throw InvalidInputException(name + " has " + std::to_string(strip.vertices2d.size()) +
+                                  " 2D vertices for " + std::to_string(n) + " 3D vertices");
+    if (!strip.uvs.empty() && strip.uvs.size() != n)
+      throw InvalidInputException(name + " has " + std::to_string(strip.uvs.size()) + " uvs for " +
+                                  std::to_string(n) + " vertices");
+    for (const Triangle& t : strip.triangles)
+      for (int v : t)
+        if (v < 0 || static_cast<std::size_t>(v) >= n)
+          throw InvalidInputException(name + " has a triangle vertex " + std::to_string(v) +
+                                      " out of range [0, " + std::to_string(n) + ")");
+  }
+}
+
+std::array<double, 6> exact_key(const Vec3& p, const Vec3& q) {
+  std::array<double, 3> a{p.x(), p.y(), p.z()}, b{q.x(), q.y(), q.z()};
+  if (b < a) std::swap(a, b);
+  return {a[0], a[1], a[2], b[0], b[1], b[2]};
+}
+
+// Chains of boundary edges glued (opposite directions) between every pair of strips.
+std::vector<PairCandidate> shared_boundaries(const std::vector<FlatStrip>& strips) {
+  std::map<std::array<double, 6>, std::vector<std::pair<int, int>>> groups;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+    for (int e = 0; e < static_cast<int>(strips[s].boundary.size()); ++e) {
+      const BoundaryEdge& edge = strips[s].boundary[e];
+      groups[exact_key(strips[s].vertices3d[edge.v0], strips[s].vertices3d[edge.v1])].push_back(
+          {s, e});
+    }
+  // (x, y) -> glued edge pairs (edge of x, edge of y).
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> glued;
+  for (const auto& [key, group] : groups) {
+    for (std::size_t i = 0; i < group.size(); ++i) {
+      for (std::size_t j = i + 1; j < group.size(); ++j) {
+        auto [si, ei] = group[i];
+        auto [sj, ej] = group[j];
+        if (si == sj) continue;
+        const BoundaryEdge& a = strips[si].boundary[ei];
+        const BoundaryEdge& b = strips[sj].boundary[ej];
+        if (strips[si].vertices3d[a.v0] != strips[sj].vertices3d[b.v1] ||
+            strips[si].vertices3d[a.v1] != strips[sj].vertices3d[b.v0])
+          continue;
+        if (si < sj)
+          glued[{si, sj}].push_back({ei, ej});
+        else
+          glued[{sj, si}].push_back({ej, ei});
+      }
+    }
+  }
+
+  std::vector<PairCandidate> result;
+  for (auto& [strip_pair, pairs] : glued) {
+    const FlatStrip& x = strips[strip_pair.first];
+    const FlatStrip& y = strips[strip_pair.second];
+    std::sort(pairs.begin(), pairs.end());
+    const int n = static_cast<int>(pairs.size());
+    // Successor of a glued pair: the next edge of X along its boundary, whose partner in
+    // Y is the previous edge of Y (they share the Y vertex at the junction).
+    std::multimap<int, int> by_x_start;  // X edge v0 -> pair index
+    for (int k = 0; k < n; ++k) by_x_start.emplace(x.boundary[pairs[k].first].v0, k);
+    std::vector<int> next(n, -1), previous_count(n, 0);
+    for (int k = 0; k < n; ++k) {
+      const BoundaryEdge& ex = x.boundary[pairs[k].first];
+      const BoundaryEdge& ey = y.boundary[pairs[k].second];
+      auto [begin, end] = by_x_start.equal_range(ex.v1);
+      for (auto it = begin; it != end; ++it) {
+        if (y.boundary[pairs[it->second].second].v1 != ey.v0 || previous_count[it->second] > 0)
+          continue;
+        next[k] = it->second;
+        ++previous_count[it->second];
+        break;
+      }
+    }
+    PairCandidate candidate;
+    candidate.x = strip_pair.first;
+    candidate.y = strip_pair.second;
+    std::vector<bool> used(n, false);
+    auto walk = [&](int k) {
+      Chain chain;
+      chain.x.push_back(x.boundary[pairs[k].first].v0);
+      chain.y.push_back(y.boundary[pairs[k].second].v1);
+      while (k >= 0 && !used[k]) {
+        used[k] = true;
+        const BoundaryEdge& ex = x.boundary[pairs[k].first];
+        chain.x.push_back(ex.v1);
+        chain.y.push_back(y.boundary[pairs[k].second].v0);
+        chain.length += (x.vertices3d[ex.v1] - x.vertices3d[ex.v0]).norm();
+        k = next[k];
+      }
+      candidate.total_length += chain.length;
+      candidate.chains.push_back(std::move(chain));
+    };
+    for (int k = 0; k < n; ++k)
+      if (previous_count[k] == 0) walk(k);
+    for (int k = 0; k < n; ++k)  // closed loops
+      if (!used[k]) walk(k);
+    result.push_back(std::move(candidate));
+  }
+  std::stable_sort(result.begin(), result.end(),
+                   [](const PairCandidate& a, const PairCandidate& b) {
+                     return a.total_length > b.total_length;
+                   });
+  return result;
+}
+
+// Best rotation + translation taking the points of Y onto those of X (2D Procrustes
+// without reflection; Umeyama 1991 restricted to det R = +1).
+RigidMotion fit(const std::vector<Vec2>& from, const std::vector<Vec2>& to) {
+  Vec2 from_centre = Vec2::Zero(), to_centre = Vec2::Zero();
+  for (std::size_t i = 0; i < from.size(); ++i) from_centre += from[i], to_centre += to[i];
+  from_centre /= static_cast<double>(from.size());
+  to_centre /= static_cast<double>(to.size());
+  double dot = 0.0, cross = 0.0;
+  for (std::size_t i = 0; i < from.size(); ++i) {
+    Vec2 p = from[i] - from_centre, q = to[i] - to_centre;
+    dot += p.dot(q);
+    cross += p.x() * q.y() - p.y() * q.x();
+  }
+  RigidMotion motion;
+  double norm = std::hypot(dot, cross);
+  if (norm > 0.0) motion.cos = dot / norm, motion.sin = cross / norm;
+  motion.translation = Vec2::Zero();
+  motion.translation = to_centre - motion(from_centre);
+  return motion;
+}
+
+double chain_residual(const FlatStrip& x, const FlatStrip& y, const Chain& chain,
+                      const RigidMotion& motion) {
+  double residual = 0.0;
+  for (std::size_t i = 0; i < chain.x.size(); ++i)
+    residual =
+        std::max(residual, (motion(y.vertices2d[chain.y[i]]) - x.vertices2d[chain.x[i]]).norm());
+  return residual;
+}
+
+double mean_edge_length(const FlatStrip& strip) {
+  double sum = 0.0;
+  for (const Triangle& t : strip.triangles)
+    for (int i = 0; i < 3; ++i)
+      sum += (strip.vertices2d[t[(i + 1) % 3]] - strip.vertices2d[t[i]]).norm();
+  return strip.triangles.empty() ? 0.0 : sum / (3.0 * strip.triangles.size());
+}
+
+// Y moved onto X along one of their chains and welded, or false when no chain gives a
+// congruent, overlap-free union.
+bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains,
+               const MergeOptions& options, FlatStrip& merged) {
+  std::stable_sort(chains.begin(), chains.end(),
+                   [](const Chain& a, const Chain& b) { return a.length > b.length; });
+  const double mean_edge = 0.5 * (mean_edge_length(x) + mean_edge_length(y));
+  for (std::size_t seed = 0; seed < chains.size(); ++seed) {
+    const Chain& chain = chains[seed];
+    std::vector<Vec2> from, to;
+    for (std::size_t i = 0; i < chain.x.size(); ++i) {
+      from.push_back(y.vertices2d[chain.y[i]]);
+      to.push_back(x.vertices2d[chain.x[i]]);
+    }
+    RigidMotion motion = fit(from, to);
+    double residual = chain_residual(x, y, chain, motion);
+    if (residual > options.congruence_tolerance * chain.length) continue;
+
+    std::vector<Vec2> moved(y.vertices2d.size());
+    for (std::size_t v = 0; v < moved.size(); ++v) moved[v] = motion(y.vertices2d[v]);
+    TriangleGrid2 grid(mean_edge > 0.0 ? mean_edge : 1.0);
+    for (const Triangle& t : x.triangles)
+      grid.insert({x.vertices2d[t[0]], x.vertices2d[t[1]], x.vertices2d[t[2]]});
+    const double tolerance = options.overlap_tolerance * mean_edge + 4.0 * residual;
+    bool overlap = false;
+    for (const Triangle& t : y.triangles)
+      if ((overlap = grid.overlaps({moved[t[0]], moved[t[1]], moved[t[2]]}, tolerance))) break;
+    if (overlap) continue;
+
+    // Weld the seed and every other chain that lands on its partner, keeping the map from
+    // Y's vertices to X's one-to-one (a chain that would break that stays a seam).
+    std::vector<int> weld(y.vertices2d.size(), -1);
+    std::vector<bool> taken(x.vertices2d.size(), false);
+    bool seed_welded = false;
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+      std::size_t k = c == 0 ? seed : (c <= seed ? c - 1 : c);
+      const Chain& candidate = chains[k];
+      if (k != seed &&
+          chain_residual(x, y, candidate, motion) > options.congruence_tolerance * candidate.length)
+        continue;
+      std::vector<int> trial = weld;
+      std::vector<bool> trial_taken = taken;
+      bool consistent = true;
+      for (std::size_t i = 0; i < candidate.x.size() && consistent; ++i) {
+        int yi = candidate.y[i], xi = candidate.x[i];
+        if (trial[yi] == xi) continue;
+        consistent = trial[yi] < 0 && !trial_taken[xi];
+        trial[yi] = xi;
+        trial_taken[xi] = true;
+      }
+      if (!consistent) continue;
+      weld = std::move(trial);
+      taken = std::move(trial_taken);
+      if (k == seed) seed_welded = true;
+    }
+    if (!seed_welded) continue;
+
+    merged = x;
+    const bool keep_uvs =
+        x.uvs.size() == x.vertices2d.size() && y.uvs.size() == y.vertices2d.size();
+    if (!keep_uvs) merged.uvs.clear();
+    std::vector<int> index(y.vertices2d.size());
+    for (std::size_t v = 0; v < index.size(); ++v) {
+      if (weld[v] >= 0) {
+        index[v] = weld[v];
+        continue;
+      }
+      index[v] = static_cast<int>(merged.vertices2d.size());
+      merged.vertices2d.push_back(moved[v]);
+      merged.vertices3d.push_back(y.vertices3d[v]);
+      if (keep_uvs) merged.uvs.push_back(y.uvs[v]);
+    }
+    for (const Triangle& t : y.triangles)
+      merged.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    merged.boundary = flat_boundary(merged.triangles);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips, const MergeOptions& options) {
+  validate(strips, options);
+  for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
+
+  // A pair that failed is not tried again until one of its strips changes.
+  std::vector<int> version(strips.size());
+  for (std::size_t i = 0; i < strips.size(); ++i) version[i] = static_cast<int>(i);
+  int next_version = static_cast<int>(strips.size());
+  std::set<std::pair<int, int>> failed;
+  for (bool merged_any = true; merged_any;) {
+    merged_any = false;
+    for (PairCandidate& candidate : shared_boundaries(strips)) {
+      std::pair<int, int> key{version[candidate.x], version[candidate.y]};
+      if (failed.count(key)) continue;
+      FlatStrip merged;
+      if (!try_merge(strips[candidate.x], strips[candidate.y], std::move(candidate.chains), options,
+                     merged)) {
+        failed.insert(key);
+        continue;
+      }
+      strips[candidate.x] = std::move(merged);
+      version[candidate.x] = next_version++;
+      strips.erase(strips.begin() + candidate.y);
+      version.erase(version.begin() + candidate.y);
+      merged_any = true;
+      break;
+    }
+  }
+  label_seams(strips);
+  return strips;
+}
+
+}  // namespace papercraft

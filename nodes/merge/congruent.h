@@ -1,0 +1,47 @@
+#pragma once
+// Merging of flat strips along congruent shared boundaries: the `merge` stage's algorithm
+// (paper section 3.4 and fig. 3, a cylinder with holes; DESIGN.md "Merge").
+//
+// Example (node config): merge: {impl: merge.congruent, to: [layout]}
+
+#include <vector>
+
+#include "core/strip.h"
+
+namespace papercraft {
+
+struct MergeOptions {
+  /// The two flat images of a shared boundary are congruent when, after the best rigid
+  /// motion (a rotation and a translation, never a reflection), no point is farther from
+  /// its partner than this times the boundary's length.
+  double congruence_tolerance = 1e-6;
+  /// The union must not overlap itself: two triangles may penetrate by at most this
+  /// times the mean edge length (plus the rigid fit's residual).
+  double overlap_tolerance = 1e-9;
+};
+
+/// Joins flat strips of one model whose shared boundaries have congruent flat images.
+///
+/// A shared boundary is a chain of consecutive boundary edges of strip X glued, with
+/// opposite directions, to consecutive boundary edges of another strip Y (same 3D
+/// endpoints, compared exactly as label_seams does). Pairs are tried greedily, the pair
+/// with the longest total shared length first; for a pair, its chains are tried longest
+/// first as the one to fit: Y is moved rigidly onto X along it and kept only if the
+/// union overlaps nowhere. Every chain of the pair that then coincides in the plane is
+/// welded (shared vertices become one, the seam edges become inner edges), so a strip
+/// fitting into a gap of the other closes it. Repeats until no pair merges, then calls
+/// label_seams on the result, so every boundary edge is Seam or Open.
+///
+/// A merged strip keeps X's place in the vector, id, source_strip and 2D frame (X being
+/// the earlier strip); the others are unchanged apart from their boundary, which is
+/// recomputed from the triangles. uvs are kept when both strips have them.
+///
+/// \pre every strip has vertices2d and vertices3d of equal size, uvs empty or of that
+///      size, triangle indices in range; options' tolerances >= 0.
+/// \throws InvalidInputException if a precondition fails.
+/// Known limit: greedy, so the merge order can leave a merge out that another order
+/// would have allowed; chains must share vertices exactly (no collinear sub-segments).
+std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
+                                       const MergeOptions& options = {});
+
+}  // namespace papercraft
