@@ -1,0 +1,111 @@
+#include "nodes/export/pattern_drawing.h"
+
+#include <cctype>
+
+#include "core/errors.h"
+
+namespace papercraft {
+namespace {
+
+struct Pens {
+  Pen cut, mountain, valley, print;
+  std::string tab_fill;
+  std::string text;
+};
+
+Pens preset_pens(StylePreset preset) {
+  switch (preset) {
+    case StylePreset::Laser:
+      // Hairlines: laser software treats sub-0.1 mm red/blue strokes as vector cut/score.
+      return {{"#ff0000", 0.025, {}},
+              {"#0000ff", 0.025, {}},
+              {"#0000ff", 0.025, {2.0, 1.0}},
+              {"#000000", 0.1, {}},
+              "",
+              "#000000"};
+    case StylePreset::Cutter:
+      return {{"#000000", 0.1, {}},
+              {"#00a000", 0.1, {3.0, 1.0, 0.6, 1.0}},
+              {"#0080ff", 0.1, {1.5, 1.0}},
+              {"#000000", 0.2, {}},
+              "",
+              "#000000"};
+    case StylePreset::Print:
+      break;
+  }
+  return {{"#000000", 0.25, {}},
+          {"#c00000", 0.2, {3.0, 1.0, 0.6, 1.0}},
+          {"#0050c0", 0.2, {1.5, 1.0}},
+          {"#000000", 0.25, {}},
+          "#e6e6e6",
+          "#000000"};
+}
+
+}  // namespace
+
+StylePreset style_preset_from_name(std::string_view name) {
+  std::string lower;
+  for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == "print") return StylePreset::Print;
+  if (lower == "laser") return StylePreset::Laser;
+  if (lower == "cutter") return StylePreset::Cutter;
+  throw InvalidInputException("unknown style preset '" + std::string(name) +
+                              "': use print, laser or cutter");
+}
+
+std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int page_index,
+                                            const StyleOptions& style) {
+  if (page_index < 0 || page_index >= static_cast<int>(layout.pages.size()))
+    throw InvalidInputException("page " + std::to_string(page_index) + " does not exist (the " +
+                                "layout has " + std::to_string(layout.pages.size()) + " pages)");
+  const Page& page = layout.pages[page_index];
+  const Pens pens = preset_pens(style.preset);
+  DrawLayer print{"print", {}, {}}, tabs{"tabs", {}, {}}, labels{"labels", {}, {}};
+  DrawLayer valley{"valley", {}, {}}, mountain{"mountain", {}, {}}, cut{"cut", {}, {}};
+
+  const ScaleBar& bar = page.scale_bar;
+  if (bar.length_mm > 0) {
+    DrawPath ruler{{}, false, true, pens.print, ""};
+    ruler.polylines.push_back({bar.start, bar.start + Vec2(bar.length_mm, 0)});
+    const int ticks = static_cast<int>(std::lround(bar.length_mm / bar.tick_spacing_mm));
+    for (int i = 0; i <= ticks; ++i) {
+      const Vec2 at = bar.start + Vec2(i * bar.tick_spacing_mm, 0);
+      const double height = (i == 0 || i == ticks) ? bar.tick_height_mm : 0.5 * bar.tick_height_mm;
+      ruler.polylines.push_back({at, at - Vec2(0, height)});
+    }
+    print.paths.push_back(std::move(ruler));
+    print.texts.push_back({bar.caption, pens.text});
+  }
+  if (!page.footer.text.empty()) {
+    Label footer = page.footer;
+    if (!style.title.empty()) {
+      // Keep the right end where the layout put it.
+      const double old_width = 0.6 * footer.size_mm * static_cast<double>(footer.text.size());
+      footer.text = style.title + " - " + footer.text;
+      const double new_width = 0.6 * footer.size_mm * static_cast<double>(footer.text.size());
+      footer.position.x() -= 0.5 * (new_width - old_width);
+    }
+    print.texts.push_back({footer, pens.text});
+  }
+
+  for (const PlacedPiece& piece : page.pieces) {
+    DrawPath outline{piece.cut_outline, true, true, pens.cut, ""};
+    cut.paths.push_back(std::move(outline));
+    DrawPath hills{{}, false, true, pens.mountain, ""}, dales{{}, false, true, pens.valley, ""};
+    for (const FoldLine& fold : piece.folds)
+      (fold.kind == FoldKind::Mountain ? hills : dales).polylines.push_back({fold.a, fold.b});
+    DrawPath flaps{{}, true, false, pens.print, pens.tab_fill};
+    for (const Tab& tab : piece.tabs) {
+      for (const auto& base : tab.bases) hills.polylines.push_back(base);
+      for (const auto& flap : tab.flaps) flaps.polylines.push_back(flap);
+    }
+    if (!hills.polylines.empty()) mountain.paths.push_back(std::move(hills));
+    if (!dales.polylines.empty()) valley.paths.push_back(std::move(dales));
+    if (!flaps.polylines.empty()) tabs.paths.push_back(std::move(flaps));
+    for (const Label& label : piece.labels) labels.texts.push_back({label, pens.text});
+    labels.texts.push_back({piece.number, pens.text});
+  }
+  return {print, tabs, labels, valley, mountain, cut};
+}
+
+}  // namespace papercraft

@@ -1,0 +1,120 @@
+#include "nodes/export/svg.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace papercraft {
+namespace {
+
+// Millimetres to 3 decimals (a micrometre), without trailing zeros.
+std::string number(double value) {
+  if (std::abs(value) < 5e-4) return "0";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", value);
+  std::string text = buffer;
+  while (text.back() == '0') text.pop_back();
+  if (text.back() == '.') text.pop_back();
+  return text;
+}
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        // Control characters are not allowed in XML 1.0.
+        if (static_cast<unsigned char>(c) >= 0x20 || c == '\t' || c == '\n') out += c;
+    }
+  }
+  return out;
+}
+
+std::string path_data(const DrawPath& path) {
+  std::string d;
+  for (const auto& line : path.polylines) {
+    if (line.empty()) continue;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (!d.empty()) d += ' ';
+      d += i == 0 ? 'M' : 'L';
+      d += number(line[i].x());
+      d += ',';
+      d += number(line[i].y());
+    }
+    if (path.closed) d += " Z";
+  }
+  return d;
+}
+
+void write_path(std::ostringstream& out, const DrawPath& path) {
+  const std::string d = path_data(path);
+  if (d.empty()) return;
+  out << "    <path d=\"" << d << "\" fill=\"" << (path.fill.empty() ? "none" : path.fill) << "\"";
+  if (path.stroked) {
+    out << " stroke=\"" << path.pen.colour << "\" stroke-width=\"" << number(path.pen.width_mm)
+        << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
+    if (!path.pen.dash_mm.empty()) {
+      out << " stroke-dasharray=\"";
+      for (std::size_t i = 0; i < path.pen.dash_mm.size(); ++i)
+        out << (i ? "," : "") << number(path.pen.dash_mm[i]);
+      out << "\"";
+    }
+  } else {
+    out << " stroke=\"none\"";
+  }
+  out << "/>\n";
+}
+
+void write_text(std::ostringstream& out, const DrawText& text, const std::string& font) {
+  const Label& l = text.label;
+  if (l.text.empty()) return;
+  const std::string x = number(l.position.x()), y = number(l.position.y());
+  out << "    <text x=\"" << x << "\" y=\"" << y << "\" font-family=\"" << escape(font)
+      << "\" font-size=\"" << number(l.size_mm) << "\" fill=\"" << text.colour
+      << "\" text-anchor=\"middle\" dominant-baseline=\"central\"";
+  if (std::abs(l.angle_degrees) > 1e-9)
+    out << " transform=\"rotate(" << number(l.angle_degrees) << " " << x << " " << y << ")\"";
+  out << ">" << escape(l.text) << "</text>\n";
+}
+
+}  // namespace
+
+std::string pattern_page_svg(const PatternLayout& layout, int page_index,
+                             const StyleOptions& style) {
+  const std::vector<DrawLayer> layers = pattern_page_drawing(layout, page_index, style);
+  const std::string width = number(layout.page.width_mm), height = number(layout.page.height_mm);
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\" standalone=\"no\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\"\n"
+      << "     xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"\n"
+      << "     version=\"1.1\" width=\"" << width << "mm\" height=\"" << height
+      << "mm\" viewBox=\"0 0 " << width << " " << height << "\">\n"
+      << "  <title>" << escape(style.title.empty() ? "papercraft pattern" : style.title)
+      << ", page " << page_index + 1 << " of " << layout.pages.size() << "</title>\n";
+  for (const DrawLayer& layer : layers) {
+    out << "  <g inkscape:groupmode=\"layer\" id=\"" << layer.id << "\" inkscape:label=\""
+        << layer.id << "\">\n";
+    for (const DrawPath& path : layer.paths) write_path(out, path);
+    for (const DrawText& text : layer.texts) write_text(out, text, style.font_family);
+    out << "  </g>\n";
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+}  // namespace papercraft

@@ -1,0 +1,20 @@
+#pragma once
+// pattern-<NN>.svg (DESIGN.md section 4): one page of a pattern layout as SVG in
+// millimetres (width, height and viewBox in mm) with one Inkscape layer per operation:
+// `<g inkscape:groupmode="layer" id="cut" inkscape:label="cut">`, likewise mountain,
+// valley, tabs, labels and print (see pattern_drawing.h for what each holds).
+
+#include <string>
+
+#include "nodes/export/pattern_drawing.h"
+#include "nodes/layout/pages.h"
+
+namespace papercraft {
+
+/// The SVG document of page `page_index` (0-based) of `layout`.
+/// \throws InvalidInputException if page_index is not a page of the layout.
+/// Known limit: the strips' texture is not drawn.
+std::string pattern_page_svg(const PatternLayout& layout, int page_index,
+                             const StyleOptions& style = {});
+
+}  // namespace papercraft

@@ -1,0 +1,216 @@
+#pragma once
+// Page layout of flat strips: the `layout` stage's algorithm (DESIGN.md section 2 "Layout").
+//
+// Strips are scaled to real size, split at inner edges where one would not fit a page,
+// given glue tabs (one side of every seam), matching seam labels, piece numbers and
+// mountain/valley fold lines, rotated to their tightest orientation and packed onto pages.
+// The result is pure geometry in page millimetres; nodes/export draws it (SVG, PDF).
+//
+// Conventions:
+// - Page coordinates are millimetres, origin at the top-left corner of the paper, x to the
+//   right, y down (as in SVG and cairo). Everything lies inside the margins.
+// - The printed side of the paper is the outside of the model: a flat strip's triangles
+//   are counter-clockwise in 2D and seen from outside in 3D, and the strip keeps that
+//   handedness on the page (the transform flips y so the page shows the strip as the
+//   strip's own y-up frame does, never mirrored).
+// - Fold lines: an inner edge whose bend angle (between the normals of its two triangles,
+//   computed from vertices3d) exceeds fold_angle_degrees. A convex edge (the model bulges
+//   outward there) is a Mountain fold seen from the printed side; a concave one a Valley.
+//   A tab folds behind the printed side, so its base is a mountain fold too.
+// - Tabs go on one side of every seam: the side whose piece comes first in order
+//   (strip id, piece index, position on the piece's boundary). If that side has no room
+//   (the tab would cover its own piece or another tab even when shrunk), the other side
+//   gets it.
+//
+// Example (node config): layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}}
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/strip.h"
+
+namespace papercraft {
+
+/// A sheet of paper in millimetres.
+struct PageSize {
+  double width_mm = 210.0;
+  double height_mm = 297.0;
+};
+
+/// "A3", "A4", "A5", "Letter", "Legal", "Tabloid" (case-insensitive) or "<width>x<height>"
+/// in millimetres ("200x300"); portrait.
+/// \throws InvalidInputException for any other name or a non-positive size.
+PageSize page_size_from_name(std::string_view name);
+
+enum class PackingMethod {
+  MaxRects,  // maximal rectangles with 90 degree rotation, several orders; never worse than Shelf
+  Shelf,     // next-fit decreasing height shelves (the plain baseline)
+};
+
+struct LayoutOptions {
+  PageSize page;
+  double margin_mm = 10.0;
+  /// Real-world size: the largest side of the 3D bounding box of all strips (vertices3d)
+  /// becomes height_mm millimetres. The largest side, not z, because meshes come with any
+  /// up axis. Ignored when scale > 0.
+  double height_mm = 200.0;
+  /// Millimetres per model unit; when > 0 it overrides height_mm.
+  double scale = 0.0;
+  double tab_width_mm = 5.0;        // 0: no tabs
+  double tab_angle_degrees = 45.0;  // angle between a tab's ends and its seam edge
+  double fold_angle_degrees = 0.5;  // bend angle above which an inner edge is a fold line
+  double spacing_mm = 2.0;          // gap between the bounding boxes of pieces
+  double label_size_mm = 2.5;       // seam label text height
+  double number_size_mm = 4.0;      // piece number text height (smaller on thin pieces)
+  double footer_mm = 8.0;           // band at the bottom of the printable area: scale bar
+  PackingMethod packing = PackingMethod::MaxRects;
+};
+
+/// Text to draw: centred on `position` (page mm), `angle_degrees` clockwise on the page
+/// from left-to-right (the SVG rotate() sense), always in (-90, 90] so it reads upright.
+struct Label {
+  std::string text;
+  Vec2 position = Vec2::Zero();
+  double angle_degrees = 0.0;
+  double size_mm = 2.5;
+};
+
+enum class FoldKind { Mountain, Valley };
+
+struct FoldLine {
+  Vec2 a = Vec2::Zero();
+  Vec2 b = Vec2::Zero();
+  FoldKind kind = FoldKind::Mountain;
+  double bend_degrees = 0.0;  // 0 = flat, 90 = a cube edge
+};
+
+/// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per
+/// nearly straight run of edges). Each flap polygon is counter-clockwise on the page as a
+/// reader sees it: its base polyline (on the seam) in reverse, then its outer chain; `bases`
+/// are the base polylines, the tab's fold lines (mountain).
+struct Tab {
+  std::string label;
+  std::vector<std::vector<Vec2>> flaps;
+  std::vector<std::vector<Vec2>> bases;
+};
+
+/// A boundary edge of a placed piece in page mm, the piece on its left as a reader sees it.
+struct PlacedEdge {
+  Vec2 a = Vec2::Zero();
+  Vec2 b = Vec2::Zero();
+  EdgeKind kind = EdgeKind::Cut;
+  std::string label;     // printed seam label ("" unless kind == Seam)
+  bool has_tab = false;  // a flap of this piece's tab is glued along this edge
+};
+
+/// Maps a strip's vertices2d (model units) to page mm: page = linear * v + translation.
+/// linear = diag(1, -1) * rotation * mm_per_unit (the y flip of page coordinates).
+struct PageTransform {
+  Eigen::Matrix2d linear = Eigen::Matrix2d::Identity();
+  Vec2 translation = Vec2::Zero();
+  double rotation_degrees = 0.0;  // counter-clockwise, in the strip's y-up frame
+
+  Vec2 apply(const Vec2& v) const { return linear * v + translation; }
+};
+
+/// One piece of paper on a page: a whole flat strip or, where the strip was split to fit
+/// a page, a part of it.
+struct PlacedPiece {
+  int strip_id = -1;
+  int piece_index = 0;  // 0..piece_count-1 along the strip
+  int piece_count = 1;
+  PageTransform transform;
+  /// The piece's own vertex arrays: page mm, the strip vertex each came from, uvs (empty
+  /// if the strip has none) and triangles indexing `vertices`.
+  std::vector<Vec2> vertices;
+  std::vector<int> strip_vertex;
+  std::vector<Vec2> uvs;
+  std::vector<Triangle> triangles;
+  /// Boundary loops of the piece without tabs (outer loop first).
+  std::vector<std::vector<Vec2>> outline;
+  /// What to cut: one closed path per boundary loop around the piece and its tabs.
+  std::vector<std::vector<Vec2>> cut_outline;
+  std::vector<PlacedEdge> edges;
+  std::vector<FoldLine> folds;  // inner edges only; tab bases are in `tabs`
+  std::vector<Tab> tabs;
+  std::vector<Label> labels;  // one per seam side on this piece
+  Label number;               // "12", or "12.3" for the third piece of split strip 12
+};
+
+/// A bar of a round length with ticks, and its caption, in page mm.
+struct ScaleBar {
+  Vec2 start = Vec2::Zero();  // left end of the bar (on its baseline)
+  double length_mm = 50.0;
+  double tick_spacing_mm = 10.0;
+  double tick_height_mm = 2.0;
+  Label caption;
+};
+
+struct Page {
+  std::vector<PlacedPiece> pieces;
+  ScaleBar scale_bar;
+  Label footer;  // "page 2 / 5"
+};
+
+struct PatternLayout {
+  PageSize page;
+  double margin_mm = 10.0;
+  double mm_per_unit = 1.0;
+  std::vector<Page> pages;
+  /// Pages the plain shelf packing needs for the same pieces (for the report).
+  int shelf_page_count = 0;
+  /// Strips that did not fit a page and were split, pieces that still do not fit
+  /// (they overflow their page), seams without a partner or without room for a tab.
+  std::vector<std::string> warnings;
+};
+
+/// Lays out `strips` on pages (see the file comment for conventions).
+///
+/// \pre every strip: vertices3d and vertices2d the same size, uvs empty or that size,
+///      triangle indices in range and counter-clockwise (or degenerate) in 2D, boundary
+///      edges are boundary edges of its triangles with the strip on their left; strip ids
+///      unique; options positive where sizes, the printable area larger than the tabs.
+/// \throws InvalidInputException if a precondition fails or the scale cannot be
+///         determined (height_mm with a flat-to-a-point model).
+/// Strips without triangles are skipped with a warning. Seam edges pair up by label and
+/// reversed 3D endpoints; a label naming more than one pair of edge chains (a seam whose
+/// strip was split, or a label reused) is printed with a suffix per pair (A1.1, A1.2). The
+/// seams a split creates are labelled <strip id>-<k> (7-1, 7-2).
+/// Known limit: pieces are packed by their bounding rectangles, not nested shapes; a
+/// single triangle larger than the page cannot be split and overflows its own page.
+PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options = {});
+
+/// Millimetres per model unit that layout_pages uses for `strips`.
+/// \throws InvalidInputException as layout_pages does for the scale.
+double layout_scale(const std::vector<FlatStrip>& strips, const LayoutOptions& options);
+
+/// Ids of the strips that fit no page in any orientation, with room for their tabs,
+/// at the layout's scale: those layout_pages splits.
+/// \throws InvalidInputException as layout_pages does.
+std::vector<int> strips_exceeding_page(const std::vector<FlatStrip>& strips,
+                                       const LayoutOptions& options);
+
+/// Where pack_rectangles put one rectangle: its page and its top-left corner in the bin;
+/// `rotated` when it lies with its width along y.
+struct PackedRectangle {
+  int page = -1;
+  double x = 0.0;
+  double y = 0.0;
+  bool rotated = false;
+};
+
+/// Packs rectangles (width, height) into as few bins of bin_width x bin_height as the
+/// method finds, keeping `spacing` between rectangles (none needed at the bin's edges).
+/// \pre every rectangle fits the bin in one of its two orientations; sizes > 0.
+/// \throws InvalidInputException if a rectangle fits in neither orientation.
+std::vector<PackedRectangle> pack_rectangles(const std::vector<Vec2>& sizes, double bin_width,
+                                             double bin_height, double spacing,
+                                             PackingMethod method);
+
+/// Pages the plain shelf packing (PackingMethod::Shelf) needs for these rectangles.
+/// \pre as pack_rectangles.
+int shelf_pack_page_count(const std::vector<Vec2>& sizes, double bin_width, double bin_height,
+                          double spacing);
+
+}  // namespace papercraft

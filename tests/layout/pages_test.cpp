@@ -1,0 +1,585 @@
+#include "nodes/layout/pages.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "core/errors.h"
+#include "support/layout_strips.h"
+
+namespace papercraft {
+namespace {
+
+using testing::arc_strip;
+using testing::cell_strip;
+using testing::l_footprint;
+using testing::mark_seam;
+using testing::prism_strips;
+using testing::square_footprint;
+
+constexpr double kEps = 1e-7;  // mm
+
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+double distance_to_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double t =
+      d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (p - (a + t * d)).norm();
+}
+
+// Strictly inside: odd crossing number and farther than eps from every edge.
+bool strictly_inside(const Vec2& p, const std::vector<Vec2>& polygon, double eps) {
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 &a = polygon[i], &b = polygon[j];
+    if (distance_to_segment(p, a, b) <= eps) return false;
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      inside = !inside;
+  }
+  return inside;
+}
+
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double eps) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  const double s1 = eps * (b - a).norm(), s2 = eps * (d - c).norm();
+  return ((d1 > s1 && d2 < -s1) || (d1 < -s1 && d2 > s1)) &&
+         ((d3 > s2 && d4 < -s2) || (d3 < -s2 && d4 > s2));
+}
+
+// Interiors of two simple polygons overlap: edges cross properly, or a corner or the
+// centroid of one lies strictly inside the other.
+bool polygons_overlap(const std::vector<Vec2>& p, const std::vector<Vec2>& q) {
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < q.size(); ++j)
+      if (segments_cross(p[i], p[(i + 1) % p.size()], q[j], q[(j + 1) % q.size()], kEps))
+        return true;
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto& a = pass ? q : p;
+    const auto& b = pass ? p : q;
+    Vec2 centroid = Vec2::Zero();
+    for (const Vec2& v : a) {
+      if (strictly_inside(v, b, kEps)) return true;
+      centroid += v;
+    }
+    if (strictly_inside(centroid / static_cast<double>(a.size()), b, kEps)) return true;
+  }
+  return false;
+}
+
+struct Shape {
+  std::vector<Vec2> polygon;
+  Vec2 lo, hi;
+  int tab = -1;   // -1: a triangle of the piece; else index of the tab in the piece
+  int flap = -1;  // index of the flap (global within the piece)
+};
+
+Shape make_shape(std::vector<Vec2> polygon, int tab, int flap) {
+  Shape s{std::move(polygon), Vec2::Constant(1e300), Vec2::Constant(-1e300), tab, flap};
+  for (const Vec2& v : s.polygon) {
+    s.lo = s.lo.cwiseMin(v);
+    s.hi = s.hi.cwiseMax(v);
+  }
+  return s;
+}
+
+// The piece's triangles and its tab flaps.
+std::vector<Shape> shapes_of(const PlacedPiece& piece) {
+  std::vector<Shape> shapes;
+  for (const Triangle& t : piece.triangles)
+    shapes.push_back(
+        make_shape({piece.vertices[t[0]], piece.vertices[t[1]], piece.vertices[t[2]]}, -1, -1));
+  int flap_id = 0;
+  for (int k = 0; k < static_cast<int>(piece.tabs.size()); ++k) {
+    const Tab& tab = piece.tabs[k];
+    EXPECT_EQ(tab.flaps.size(), tab.bases.size());
+    for (std::size_t f = 0; f < tab.flaps.size(); ++f, ++flap_id) {
+      EXPECT_GT(tab.flaps[f].size(), tab.bases[f].size());
+      shapes.push_back(make_shape(tab.flaps[f], k, flap_id));
+    }
+  }
+  return shapes;
+}
+
+bool boxes_overlap(const Shape& a, const Shape& b) {
+  return a.lo.x() < b.hi.x() && b.lo.x() < a.hi.x() && a.lo.y() < b.hi.y() && b.lo.y() < a.hi.y();
+}
+
+// Every invariant a layout promises (pages_test's contract with layout_pages).
+void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStrip>& strips,
+                         const LayoutOptions& options) {
+  const double x0 = options.margin_mm - kEps, y0 = options.margin_mm - kEps;
+  const double x1 = options.page.width_mm - options.margin_mm + kEps;
+  const double y1 = options.page.height_mm - options.margin_mm + kEps;
+  auto inside = [&](const Vec2& p) {
+    return p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1;
+  };
+  std::map<int, const FlatStrip*> by_id;
+  for (const FlatStrip& s : strips) by_id[s.id] = &s;
+  std::map<std::string, int> label_count, tab_count;
+  std::map<int, std::size_t> triangles_per_strip;
+
+  for (std::size_t p = 0; p < layout.pages.size(); ++p) {
+    const Page& page = layout.pages[p];
+    EXPECT_TRUE(inside(page.scale_bar.start));
+    EXPECT_TRUE(inside(page.scale_bar.start + Vec2(page.scale_bar.length_mm, 0)));
+    std::vector<std::vector<Shape>> shapes;
+    for (const PlacedPiece& piece : page.pieces) {
+      std::ostringstream trace;
+      trace << "page " << p << " strip " << piece.strip_id << " piece " << piece.piece_index;
+      SCOPED_TRACE(trace.str());
+      const FlatStrip& strip = *by_id.at(piece.strip_id);
+      triangles_per_strip[piece.strip_id] += piece.triangles.size();
+      for (const Vec2& v : piece.vertices) EXPECT_TRUE(inside(v)) << v.transpose();
+      for (const Tab& tab : piece.tabs)
+        for (const auto& flap : tab.flaps)
+          for (const Vec2& v : flap) EXPECT_TRUE(inside(v)) << v.transpose();
+      for (const Label& label : piece.labels) EXPECT_TRUE(inside(label.position));
+      EXPECT_TRUE(inside(piece.number.position));
+      for (const FoldLine& fold : piece.folds) EXPECT_TRUE(inside(fold.a) && inside(fold.b));
+
+      // An isometric copy at mm_per_unit, never mirrored (counter-clockwise as seen on
+      // the page, whose y axis points down).
+      for (const Triangle& t : piece.triangles) {
+        for (int i = 0; i < 3; ++i) {
+          const int a = t[i], b = t[(i + 1) % 3];
+          const double page_length = (piece.vertices[a] - piece.vertices[b]).norm();
+          const double model_length =
+              (strip.vertices3d[piece.strip_vertex[a]] - strip.vertices3d[piece.strip_vertex[b]])
+                  .norm();
+          EXPECT_NEAR(page_length, model_length * layout.mm_per_unit,
+                      1e-9 * std::max(1.0, page_length));
+          EXPECT_NEAR(
+              (piece.transform.apply(strip.vertices2d[piece.strip_vertex[a]]) - piece.vertices[a])
+                  .norm(),
+              0.0, 1e-9);
+        }
+        EXPECT_LE(cross(piece.vertices[t[1]] - piece.vertices[t[0]],
+                        piece.vertices[t[2]] - piece.vertices[t[0]]),
+                  1e-9);
+      }
+
+      for (const Label& label : piece.labels) ++label_count[label.text];
+      for (const Tab& tab : piece.tabs) {
+        ++tab_count[tab.label];
+        EXPECT_FALSE(tab.flaps.empty());
+        // Every flap lies along seam edges of this piece that carry the tab's label.
+        for (const auto& base : tab.bases)
+          for (std::size_t j = 0; j + 1 < base.size(); ++j) {
+            bool found = false;
+            for (const PlacedEdge& e : piece.edges) {
+              if ((e.a - base[j]).norm() > 1e-9 || (e.b - base[j + 1]).norm() > 1e-9) continue;
+              found = true;
+              EXPECT_EQ(e.kind, EdgeKind::Seam);
+              EXPECT_EQ(e.label, tab.label);
+              EXPECT_TRUE(e.has_tab);
+            }
+            EXPECT_TRUE(found) << "tab " << tab.label << " is not on an edge of its piece";
+          }
+      }
+      for (const PlacedEdge& e : piece.edges) {
+        if (e.kind != EdgeKind::Seam) {
+          EXPECT_FALSE(e.has_tab);
+        }
+      }
+
+      // Tabs cover neither their own piece nor each other.
+      std::vector<Shape> mine = shapes_of(piece);
+      for (std::size_t i = 0; i < mine.size(); ++i)
+        for (std::size_t j = i + 1; j < mine.size(); ++j) {
+          if (mine[i].tab < 0 && mine[j].tab < 0) continue;  // unfold guarantees these
+          if (mine[i].flap >= 0 && mine[i].flap == mine[j].flap) continue;
+          if (boxes_overlap(mine[i], mine[j])) {
+            EXPECT_FALSE(polygons_overlap(mine[i].polygon, mine[j].polygon))
+                << "tab shapes " << i << " and " << j << " overlap";
+          }
+        }
+      shapes.push_back(std::move(mine));
+    }
+    // No two pieces (with their tabs) overlap.
+    for (std::size_t a = 0; a < shapes.size(); ++a)
+      for (std::size_t b = a + 1; b < shapes.size(); ++b)
+        for (const Shape& sa : shapes[a])
+          for (const Shape& sb : shapes[b])
+            if (boxes_overlap(sa, sb)) {
+              ASSERT_FALSE(polygons_overlap(sa.polygon, sb.polygon))
+                  << "pieces " << a << " and " << b << " overlap on page " << p;
+            }
+  }
+  // Every strip is laid out completely.
+  for (const FlatStrip& s : strips) EXPECT_EQ(triangles_per_strip[s.id], s.triangles.size());
+  // Matching labels on both sides of every seam, one tab per seam. A seam split with its
+  // strip is printed as several (L.1, L.2, ...).
+  std::set<std::string> input_labels;
+  for (const FlatStrip& s : strips)
+    for (const BoundaryEdge& e : s.boundary)
+      if (e.kind == EdgeKind::Seam) input_labels.insert(e.label);
+  for (const std::string& label : input_labels) {
+    int printed = label_count.count(label) ? label_count[label] : 0;
+    std::string prefix = label;
+    prefix += '.';
+    for (const auto& [text, count] : label_count)
+      if (text.compare(0, prefix.size(), prefix) == 0) printed += count;
+    EXPECT_GE(printed, 2) << label;
+  }
+  for (const auto& [label, count] : label_count) {
+    EXPECT_EQ(count, 2) << "seam label " << label;
+    if (options.tab_width_mm > 0) {
+      EXPECT_EQ(tab_count[label], 1) << "tabs of seam " << label;
+    }
+  }
+  for (const auto& [label, count] : tab_count) EXPECT_EQ(label_count.count(label), 1u) << label;
+}
+
+std::vector<const PlacedPiece*> pieces_of(const PatternLayout& layout, int strip_id) {
+  std::vector<const PlacedPiece*> result;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces)
+      if (piece.strip_id == strip_id) result.push_back(&piece);
+  return result;
+}
+
+int count_folds(const PlacedPiece& piece, FoldKind kind) {
+  int count = 0;
+  for (const FoldLine& f : piece.folds) count += f.kind == kind;
+  return count;
+}
+
+TEST(LayoutPages, PageSizeNames) {
+  EXPECT_EQ(page_size_from_name("A4").width_mm, 210.0);
+  EXPECT_EQ(page_size_from_name("a4").height_mm, 297.0);
+  EXPECT_EQ(page_size_from_name("Letter").width_mm, 215.9);
+  EXPECT_EQ(page_size_from_name("A3").height_mm, 420.0);
+  const PageSize custom = page_size_from_name("300x450.5");
+  EXPECT_EQ(custom.width_mm, 300.0);
+  EXPECT_EQ(custom.height_mm, 450.5);
+  EXPECT_THROW(page_size_from_name("B7"), InvalidInputException);
+  EXPECT_THROW(page_size_from_name("0x100"), InvalidInputException);
+  EXPECT_THROW(page_size_from_name("100x"), InvalidInputException);
+}
+
+// A box: the band folds at three corners (the fourth is its seam), all convex: mountains.
+// Seams A (band with itself), T and B (band with caps): two labels and one tab each, the
+// tabs on the band (the lower strip id).
+TEST(LayoutPages, BoxHasMountainFoldsMatchingLabelsAndOneTabPerSeam) {
+  const auto strips = prism_strips(square_footprint(40), 60, 0);
+  LayoutOptions options;
+  options.scale = 1.0;
+  const PatternLayout layout = layout_pages(strips, options);
+  EXPECT_DOUBLE_EQ(layout.mm_per_unit, 1.0);
+  ASSERT_EQ(layout.pages.size(), 1u);
+  ASSERT_EQ(layout.pages[0].pieces.size(), 3u);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_TRUE(layout.warnings.empty());
+
+  const PlacedPiece& band = *pieces_of(layout, 0).at(0);
+  EXPECT_EQ(band.folds.size(), 3u);
+  EXPECT_EQ(count_folds(band, FoldKind::Mountain), 3);
+  for (const FoldLine& f : band.folds) {
+    EXPECT_NEAR(f.bend_degrees, 90.0, 1e-9);
+    EXPECT_NEAR((f.a - f.b).norm(), 60.0, 1e-9);
+  }
+  EXPECT_EQ(band.tabs.size(), 3u);
+  EXPECT_EQ(band.labels.size(), 4u);  // A twice, T, B
+  EXPECT_EQ(band.number.text, "0");
+  for (int cap : {1, 2}) {
+    const PlacedPiece& piece = *pieces_of(layout, cap).at(0);
+    EXPECT_TRUE(piece.folds.empty());  // the diagonal is flat
+    EXPECT_TRUE(piece.tabs.empty());
+    ASSERT_EQ(piece.labels.size(), 1u);
+    EXPECT_EQ(piece.labels[0].text, cap == 1 ? "T" : "B");
+    ASSERT_EQ(piece.cut_outline.size(), 1u);
+    EXPECT_EQ(piece.cut_outline[0].size(), 4u);  // no tab: the square itself
+  }
+  // The band's cut line goes around its three tabs: its 10 corners and the tabs' outer
+  // chains (the ends and a mitre point over every seam vertex between).
+  ASSERT_EQ(band.cut_outline.size(), 1u);
+  EXPECT_EQ(band.cut_outline[0].size(), 10u + 5u + 5u + 2u);
+  // Labels are upright and have a readable size.
+  for (const Label& label : band.labels) {
+    EXPECT_GT(label.angle_degrees, -90.0);
+    EXPECT_LE(label.angle_degrees, 90.0);
+    EXPECT_GE(label.size_mm, 2.5 - 1e-12);
+  }
+}
+
+// An L-shaped prism has one reflex corner: a valley fold among four mountains.
+TEST(LayoutPages, LShapedPrismHasOneValleyFold) {
+  const auto strips = prism_strips(l_footprint(20), 30, 4);
+  LayoutOptions options;
+  options.scale = 1.5;
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  const PlacedPiece& band = *pieces_of(layout, 4).at(0);
+  EXPECT_EQ(count_folds(band, FoldKind::Mountain), 4);
+  EXPECT_EQ(count_folds(band, FoldKind::Valley), 1);
+}
+
+// height_mm maps the largest side of the 3D bounding box (here x and y: 20, z: 15).
+TEST(LayoutPages, HeightMapsLargestSideOfTheBoundingBox) {
+  const auto strips = prism_strips(l_footprint(10), 15, 0);
+  LayoutOptions options;
+  options.height_mm = 100;
+  EXPECT_DOUBLE_EQ(layout_scale(strips, options), 5.0);
+  const PatternLayout layout = layout_pages(strips, options);
+  EXPECT_DOUBLE_EQ(layout.mm_per_unit, 5.0);
+  expect_valid_layout(layout, strips, options);
+  options.scale = 2.0;  // overrides height_mm
+  EXPECT_DOUBLE_EQ(layout_scale(strips, options), 2.0);
+}
+
+// Two cells bent along their shared edge: a fold only above the threshold; bent away from
+// the printed (outer, +z) side it is a mountain, towards it a valley.
+TEST(LayoutPages, FoldThresholdAndDirection) {
+  auto bent = [](double degrees) {
+    FlatStrip s = cell_strip(0, 2, 1, 10, 10);
+    const double a = degrees * M_PI / 180.0;
+    for (std::size_t v = 0; v < s.vertices2d.size(); ++v)
+      if (s.vertices2d[v].x() > 15)
+        s.vertices3d[v] = Vec3(10 + 10 * std::cos(a), s.vertices2d[v].y(), 10 * std::sin(a));
+    return std::vector<FlatStrip>{s};
+  };
+  LayoutOptions options;
+  options.scale = 1;
+  options.fold_angle_degrees = 0.5;
+  EXPECT_TRUE(layout_pages(bent(0.3), options).pages[0].pieces[0].folds.empty());
+  options.fold_angle_degrees = 0.1;
+  auto folds = layout_pages(bent(0.3), options).pages[0].pieces[0].folds;
+  ASSERT_EQ(folds.size(), 1u);
+  EXPECT_EQ(folds[0].kind, FoldKind::Valley);
+  EXPECT_NEAR(folds[0].bend_degrees, 0.3, 1e-6);
+  folds = layout_pages(bent(-30), options).pages[0].pieces[0].folds;
+  ASSERT_EQ(folds.size(), 1u);
+  EXPECT_EQ(folds[0].kind, FoldKind::Mountain);
+  EXPECT_NEAR(folds[0].bend_degrees, 30, 1e-6);
+}
+
+TEST(LayoutPages, OpenEdgesGetNoTabsOrLabels) {
+  const std::vector<FlatStrip> strips = {cell_strip(3, 4, 2, 10, 10)};
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  const PlacedPiece& piece = layout.pages.at(0).pieces.at(0);
+  EXPECT_TRUE(piece.tabs.empty());
+  EXPECT_TRUE(piece.labels.empty());
+  EXPECT_EQ(piece.number.text, "3");
+  for (const PlacedEdge& e : piece.edges) EXPECT_EQ(e.kind, EdgeKind::Open);
+  expect_valid_layout(layout, strips, options);
+}
+
+// 600 mm of strip on A4: split at rulings (inner edges across the strip) into pieces that
+// fit, each cut a new seam with its own label pair and tab.
+TEST(LayoutPages, LongStripIsSplitAtRulingsIntoPiecesThatFit) {
+  const std::vector<FlatStrip> strips = {cell_strip(7, 60, 1, 10, 20)};
+  LayoutOptions options;
+  options.scale = 1;
+  EXPECT_EQ(strips_exceeding_page(strips, options), std::vector<int>{7});
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  const auto pieces = pieces_of(layout, 7);
+  ASSERT_EQ(pieces.size(), 3u);
+  std::set<std::string> numbers;
+  std::map<std::string, int> seam_edges;
+  for (const PlacedPiece* piece : pieces) {
+    EXPECT_EQ(piece->piece_count, 3);
+    numbers.insert(piece->number.text);
+    for (const PlacedEdge& e : piece->edges)
+      if (e.kind == EdgeKind::Seam) {
+        ++seam_edges[e.label];
+        EXPECT_NEAR((e.a - e.b).norm(), 20.0, 1e-9);  // one ruling
+      }
+  }
+  EXPECT_EQ(numbers, (std::set<std::string>{"7.1", "7.2", "7.3"}));
+  EXPECT_EQ(seam_edges.size(), 2u);
+  for (const auto& [label, count] : seam_edges) EXPECT_EQ(count, 2) << label;
+  ASSERT_FALSE(layout.warnings.empty());
+  EXPECT_NE(layout.warnings[0].find("strip 7"), std::string::npos);
+  // A short strip is left whole.
+  EXPECT_TRUE(strips_exceeding_page({cell_strip(8, 20, 1, 10, 20)}, options).empty());
+}
+
+// A 300 degree annulus, 340 mm across: split along its arc into pieces that fit.
+TEST(LayoutPages, CurvedStripIsSplitIntoPiecesThatFit) {
+  const std::vector<FlatStrip> strips = {arc_strip(2, 150, 170, 300 * M_PI / 180, 120)};
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_GE(pieces_of(layout, 2).size(), 2u);
+}
+
+// A U-shaped piece whose slot walls are glued to each other: the tab shrinks to fit in a
+// 2.4 mm slot and is dropped (with a warning) in a 0.8 mm one.
+TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
+  auto slotted = [](int slot_cells) {
+    const double cell = 0.8;
+    FlatStrip s = cell_strip(0, 25, 25, cell, cell, [&](int i, int j) {
+      return !(i >= 10 && i < 10 + slot_cells && j >= 5);
+    });
+    const double left = 10 * cell, right = (10 + slot_cells) * cell;
+    mark_seam(s, "S", 0, [&](const Vec2& m) {
+      return (std::abs(m.x() - left) < 1e-9 || std::abs(m.x() - right) < 1e-9) && m.y() > 5 * cell;
+    });
+    return std::vector<FlatStrip>{s};
+  };
+  LayoutOptions options;
+  options.scale = 1;
+  const auto wide = slotted(3);
+  PatternLayout layout = layout_pages(wide, options);
+  expect_valid_layout(layout, wide, options);
+  const PlacedPiece& piece = layout.pages.at(0).pieces.at(0);
+  ASSERT_EQ(piece.tabs.size(), 1u);
+  EXPECT_TRUE(layout.warnings.empty());
+
+  const auto narrow = slotted(1);
+  layout = layout_pages(narrow, options);
+  EXPECT_TRUE(layout.pages.at(0).pieces.at(0).tabs.empty());
+  ASSERT_EQ(layout.warnings.size(), 1u);
+  EXPECT_NE(layout.warnings[0].find("no room"), std::string::npos);
+}
+
+// Random rectangles seamed in pairs along their long sides, random scale: valid layouts.
+TEST(LayoutPages, RandomStripsWithSeamsKeepEveryInvariant) {
+  std::mt19937 random(12345);
+  std::uniform_int_distribution<int> cells(1, 8);
+  std::uniform_real_distribution<double> size(3.0, 25.0);
+  int pages = 0, shelf_pages = 0;
+  for (int round = 0; round < 4; ++round) {
+    std::vector<FlatStrip> strips;
+    for (int k = 0; k < 24; ++k) {
+      const int nx = cells(random), ny = cells(random);
+      const double w = size(random), h = size(random);
+      FlatStrip s = cell_strip(k, nx, ny, w, h);
+      std::string label = "P";
+      label += std::to_string(k / 2);
+      if (k % 2 == 0)
+        mark_seam(s, label, k + 1, [&](const Vec2& m) { return std::abs(m.y()) < 1e-9; });
+      else
+        mark_seam(s, label, k - 1, [&](const Vec2& m) { return std::abs(m.y() - ny * h) < 1e-9; });
+      strips.push_back(s);
+    }
+    LayoutOptions options;
+    options.scale = 0.5 + 0.25 * round;
+    const PatternLayout layout = layout_pages(strips, options);
+    expect_valid_layout(layout, strips, options);
+    EXPECT_LE(static_cast<int>(layout.pages.size()), layout.shelf_page_count);
+    pages += static_cast<int>(layout.pages.size());
+    shelf_pages += layout.shelf_page_count;
+  }
+  std::cout << "[ pages    ] layout " << pages << ", shelf " << shelf_pages
+            << " on 4 sets of 24 seamed strips\n";
+}
+
+// Rectangles' pages: MaxRects never worse than the shelf baseline; rectangles keep the
+// spacing and stay in their bin.
+TEST(LayoutPages, PackerNeverNeedsMorePagesThanShelf) {
+  std::mt19937 random(777);
+  int total_packed = 0, total_shelf = 0;
+  for (int round = 0; round < 30; ++round) {
+    std::uniform_real_distribution<double> side(5.0, round % 2 ? 180.0 : 90.0);
+    std::vector<Vec2> sizes;
+    for (int k = 0; k < 40; ++k) sizes.emplace_back(side(random), side(random));
+    const double w = 190, h = 267, spacing = 2;
+    const auto placed = pack_rectangles(sizes, w, h, spacing, PackingMethod::MaxRects);
+    int pages = 0;
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+      pages = std::max(pages, placed[i].page + 1);
+      const Vec2 size_i = placed[i].rotated ? Vec2(sizes[i].y(), sizes[i].x()) : sizes[i];
+      EXPECT_GE(placed[i].x, -1e-9);
+      EXPECT_GE(placed[i].y, -1e-9);
+      EXPECT_LE(placed[i].x + size_i.x(), w + 1e-6);
+      EXPECT_LE(placed[i].y + size_i.y(), h + 1e-6);
+      for (std::size_t j = 0; j < i; ++j) {
+        if (placed[i].page != placed[j].page) continue;
+        const Vec2 size_j = placed[j].rotated ? Vec2(sizes[j].y(), sizes[j].x()) : sizes[j];
+        const bool apart = placed[i].x + size_i.x() + spacing <= placed[j].x + 1e-6 ||
+                           placed[j].x + size_j.x() + spacing <= placed[i].x + 1e-6 ||
+                           placed[i].y + size_i.y() + spacing <= placed[j].y + 1e-6 ||
+                           placed[j].y + size_j.y() + spacing <= placed[i].y + 1e-6;
+        EXPECT_TRUE(apart) << "rectangles " << i << " and " << j;
+      }
+    }
+    const int shelf = shelf_pack_page_count(sizes, w, h, spacing);
+    EXPECT_LE(pages, shelf);
+    total_packed += pages;
+    total_shelf += shelf;
+  }
+  EXPECT_LT(total_packed, total_shelf);
+  std::cout << "[ pages    ] MaxRects " << total_packed << ", shelf " << total_shelf
+            << " on 30 random sets of 40 rectangles\n";
+}
+
+// One tall piece and six small ones: shelves waste the height beside the tall piece
+// (2 pages); MaxRects stacks the small ones beside it (1 page).
+TEST(LayoutPages, PackerBeatsShelfOnTallAndSmallPieces) {
+  std::vector<FlatStrip> strips = {cell_strip(0, 1, 5, 120, 50)};
+  for (int k = 1; k <= 6; ++k) strips.push_back(cell_strip(k, 3, 2, 20, 20));
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_EQ(layout.pages.size(), 1u);
+  EXPECT_EQ(layout.shelf_page_count, 2);
+  options.packing = PackingMethod::Shelf;
+  EXPECT_EQ(layout_pages(strips, options).pages.size(), 2u);
+}
+
+TEST(LayoutPages, OversizedTriangleOverflowsWithWarning) {
+  const std::vector<FlatStrip> strips = {cell_strip(0, 1, 1, 400, 400)};
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  EXPECT_EQ(layout.pages.size(), 2u);  // split into its two triangles, each alone
+  bool overflow = false;
+  for (const std::string& w : layout.warnings) overflow |= w.find("overflows") != std::string::npos;
+  EXPECT_TRUE(overflow);
+}
+
+TEST(LayoutPages, BadInputThrows) {
+  LayoutOptions options;
+  options.scale = 1;
+  const FlatStrip good = cell_strip(0, 2, 1, 10, 10);
+  EXPECT_NO_THROW(layout_pages({good}, options));
+  EXPECT_TRUE(layout_pages({}, options).pages.empty());
+
+  FlatStrip clockwise = good;
+  std::swap(clockwise.triangles[0][1], clockwise.triangles[0][2]);
+  EXPECT_THROW(layout_pages({clockwise}, options), InvalidInputException);
+  FlatStrip sizes = good;
+  sizes.vertices3d.pop_back();
+  EXPECT_THROW(layout_pages({sizes}, options), InvalidInputException);
+  FlatStrip index = good;
+  index.triangles[1][2] = 99;
+  EXPECT_THROW(layout_pages({index}, options), InvalidInputException);
+  FlatStrip inner = good;
+  inner.boundary.push_back({0, 4, EdgeKind::Open, -1, ""});  // the first cell's diagonal
+  EXPECT_THROW(layout_pages({inner}, options), InvalidInputException);
+  EXPECT_THROW(layout_pages({good, good}, options), InvalidInputException);  // same id
+
+  LayoutOptions bad = options;
+  bad.margin_mm = -1;
+  EXPECT_THROW(layout_pages({good}, bad), InvalidInputException);
+  bad = options;
+  bad.page = {40, 40};
+  bad.margin_mm = 15;
+  EXPECT_THROW(layout_pages({good}, bad), InvalidInputException);
+  bad = LayoutOptions{};
+  FlatStrip point = good;
+  for (Vec3& v : point.vertices3d) v = Vec3::Zero();
+  EXPECT_THROW(layout_scale({point}, bad), InvalidInputException);
+  EXPECT_THROW(pack_rectangles({Vec2(300, 300)}, 190, 267, 2, PackingMethod::MaxRects),
+               InvalidInputException);
+}
+
+}  // namespace
+}  // namespace papercraft
