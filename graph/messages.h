@@ -39,8 +39,8 @@ struct Model {
 struct Part {
   static constexpr const char* kMessageName = "Part";
   std::shared_ptr<const Mesh> mesh;
-  int id = 0;
-  int depth = 0;  // number of cuts from the segment it came from
+  std::string path;  // deterministic id: "<segment>" then ".<child>" per cut ("0.1.0")
+  int depth = 0;     // number of cuts since the segment it came from
   std::shared_ptr<const Model> model;
 };
 
@@ -70,7 +70,6 @@ struct AcceptedStrip {
   static constexpr const char* kMessageName = "AcceptedStrip";
   std::shared_ptr<const Candidate> candidate;
   std::shared_ptr<const RuledStrip> strip;
-  int strip_id = 0;
   double upper_bound = 0.0;  // certified upper bound of the Hausdorff distance
   bool certified = true;     // false for sampled (uncertified) deciders
 };
@@ -93,12 +92,14 @@ struct UnfoldedStrip {
   std::vector<FlatStrip> flat;
 };
 
-/// All strips of one model, after merging.
+/// All strips of one model, after merging. 3D strip i is strips3d[i] (sorted by part path,
+/// so ids do not depend on thread timing); FlatStrip::source_strip indexes it.
 struct ModelStrips {
   static constexpr const char* kMessageName = "ModelStrips";
-  std::vector<std::shared_ptr<const AcceptedStrip>> strips3d;  // sorted by strip_id
+  std::vector<std::shared_ptr<const AcceptedStrip>> strips3d;
   std::vector<FlatStrip> flat;
   std::size_t flat_before_merge = 0;
+  std::shared_ptr<const Model> model;  // the input (null only when there are no strips)
 };
 
 /// Strips laid out on pages, ready to export.

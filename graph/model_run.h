@@ -71,6 +71,8 @@ struct ModelRun {
   std::vector<std::string> notes() const;
 
   std::vector<NodeStatistics> node_stats;  // index: node index in the pipeline
+  /// Configured node names and implementations, same indexing (set by the pipeline).
+  std::vector<std::pair<std::string, std::string>> node_labels;
 
   // Framework-internal: gathered payloads per gather index and which gathers flushed.
   std::mutex gather_mutex;

@@ -94,6 +94,9 @@ class Execution {
       const std::size_t first = std::min<std::size_t>(max_in_flight_, inputs_.size());
       for (std::size_t i = 0; i < first; ++i) start_next();
       graph.wait_for_all();
+      // Nodes refer to their graph: destroy them while it is alive.
+      gathers_.clear();
+      nodes_.clear();
     });
     {
       std::lock_guard lock(progress_mutex_);
@@ -258,6 +261,7 @@ class Execution {
       std::lock_guard lock(active_mutex_);
       active_.insert(model.get());
     }
+    for (const auto& node : config_.nodes) model->node_labels.emplace_back(node.name, node.impl);
     model->in_flight.store(1);
     nodes_[config_.entry]->try_put(
         Envelope{model, std::make_shared<const Job>(Job{inputs_[index]})});

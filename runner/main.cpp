@@ -1,1 +1,318 @@
-int main() { return 0; }
+// papercraft — turns triangle meshes into paper patterns. See README.md for every command.
+
+#include <CLI/CLI.hpp>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <nlohmann/json.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "core/generate.h"
+#include "core/mesh.h"
+#include "graph/config.h"
+#include "graph/pipeline.h"
+#include "graph/registry.h"
+#include "runner/batch_job.h"
+
+namespace papercraft {
+namespace {
+
+// Exit codes (README "Exit codes").
+constexpr int kExitOk = 0;
+constexpr int kExitModelFailed = 1;
+constexpr int kExitUsage = 2;
+constexpr int kExitInternal = 3;
+
+struct CommonOptions {
+  bool verbose = false;
+  bool quiet = false;
+};
+
+void setup_logging(const CommonOptions& common) {
+  auto logger = spdlog::stderr_color_mt("papercraft");
+  logger->set_pattern("%^[%l]%$ %v");
+  spdlog::set_default_logger(logger);
+  spdlog::set_level(common.verbose ? spdlog::level::debug
+                                   : common.quiet ? spdlog::level::warn : spdlog::level::info);
+}
+
+std::string format_percent(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g%%", value);
+  return buffer;
+}
+
+std::string batch_json(const std::vector<ModelResult>& results, const std::filesystem::path& out) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& r : results) {
+    nlohmann::json row = {{"name", r.name},
+                          {"input", r.input.string()},
+                          {"status", r.ok ? "ok" : "error"},
+                          {"seconds", r.seconds}};
+    if (!r.ok) row["error"] = r.error;
+    auto get = [&](const char* key) {
+      auto it = r.results.find(key);
+      return it == r.results.end() ? 0.0 : it->second;
+    };
+    if (r.ok) {
+      row["output"] = (out / r.name).string();
+      row["strips_3d"] = static_cast<long>(get("strips_3d"));
+      row["flat_strips"] = static_cast<long>(get("flat_strips"));
+      row["pages"] = static_cast<long>(get("pages"));
+      row["hausdorff_bound"] = get("hausdorff_bound");
+      row["certified"] = get("certified") > 0.5;
+    }
+    rows.push_back(std::move(row));
+  }
+  long failed = 0;
+  for (const auto& r : results) failed += r.ok ? 0 : 1;
+  nlohmann::json root = {{"version", PAPERCRAFT_VERSION},
+                         {"models", results.size()},
+                         {"failed", failed},
+                         {"results", rows}};
+  return root.dump(2) + "\n";
+}
+
+struct RunRequest {
+  std::vector<std::filesystem::path> inputs;
+  std::string config_file;  // empty: builtin default
+  std::string tolerance;    // empty: from the config
+  std::filesystem::path output = "out";
+  int threads = -1;         // -1: from the config
+  double height_mm = 0.0;
+  double scale = 0.0;
+};
+
+int execute(const RunRequest& request, const CommonOptions& common) {
+  const Registry& registry = builtin_registry();
+  PipelineConfig config =
+      request.config_file.empty()
+          ? parse_pipeline_config(default_config_text(), "<builtin default.yaml>", registry)
+          : load_pipeline_config(request.config_file, registry);
+  auto settings = std::make_shared<RunSettings>();
+  settings->tolerance = config.tolerance.value_or(ToleranceSpec{});
+  if (!request.tolerance.empty()) {
+    try {
+      settings->tolerance = parse_tolerance(request.tolerance);
+    } catch (const std::invalid_argument& e) {
+      throw InvalidInputException(std::string("--tolerance: ") + e.what());
+    }
+  }
+  settings->output_dir = request.output;
+  settings->threads = request.threads >= 0 ? request.threads : config.threads.value_or(0);
+  settings->config_file = config.file;
+  settings->config_text = config.text;
+  settings->height_mm = request.height_mm;
+  settings->scale = request.scale;
+
+  PipelineOptions options;
+  options.threads = settings->threads;
+  options.progress = !common.quiet;
+  Pipeline pipeline(std::move(config), registry);
+  spdlog::info("{} model(s), tolerance {}, {} thread(s), output {}", request.inputs.size(),
+               settings->tolerance.to_string(),
+               settings->threads == 0 ? std::string("all") : std::to_string(settings->threads),
+               settings->output_dir.string());
+  const auto results = pipeline.run(request.inputs, settings, options);
+  write_file_atomic(settings->output_dir / "batch.json", batch_json(results, settings->output_dir));
+
+  int failed = 0;
+  for (const auto& r : results) {
+    auto get = [&](const char* key) {
+      auto it = r.results.find(key);
+      return it == r.results.end() ? 0.0 : it->second;
+    };
+    if (r.ok) {
+      const double largest = get("largest_side");
+      std::cout << r.name << ": ok, " << get("strips_3d") << " strips -> " << get("flat_strips")
+                << " flat strips on " << get("pages") << " page(s), "
+                << (get("certified") > 0.5 ? "certified" : "UNCERTIFIED") << " error <= "
+                << format_percent(largest > 0 ? 100 * get("hausdorff_bound") / largest : 0)
+                << " of the largest side, " << r.seconds << " s -> "
+                << (settings->output_dir / r.name).string() << "/\n";
+    } else {
+      ++failed;
+      std::cout << r.name << ": ERROR " << r.error << "\n";
+    }
+  }
+  std::cout << results.size() - failed << " passed, " << failed << " failed; summary in "
+            << (settings->output_dir / "batch.json").string() << "\n";
+  return failed > 0 ? kExitModelFailed : kExitOk;
+}
+
+void print_nodes(const Registry& registry) {
+  for (const auto& [name, spec] : registry.specs()) {
+    std::cout << name << "\n    " << spec.summary << "\n    input:  " << spec.input.name
+              << (spec.gathers ? " (gathers all of a model's messages)" : "") << "\n";
+    if (spec.outputs.empty()) std::cout << "    output: none (writes files)\n";
+    for (const auto& port : spec.outputs) {
+      std::cout << "    output: " << port.name << " -> " << port.type.name << "\n";
+    }
+    for (const auto& p : spec.params) {
+      std::cout << "    param " << p.name << " (" << to_string(p.type) << ", default "
+                << p.default_value << "): " << p.description;
+      if (!p.choices.empty()) {
+        std::cout << " [";
+        for (std::size_t i = 0; i < p.choices.size(); ++i) std::cout << (i ? "|" : "") << p.choices[i];
+        std::cout << "]";
+      }
+      std::cout << "\n";
+    }
+  }
+}
+
+int generate(const std::string& shape, const std::filesystem::path& out,
+             const std::vector<std::string>& assignments) {
+  std::map<std::string, double> parameters;
+  for (const auto& a : assignments) {
+    const auto eq = a.find('=');
+    if (eq == std::string::npos) throw InvalidInputException("--param expects NAME=VALUE, got '" + a + "'");
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(a.substr(eq + 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != a.size() - eq - 1) {
+      throw InvalidInputException("--param " + a + ": expected a number after '='");
+    }
+    parameters[a.substr(0, eq)] = value;
+  }
+  const Mesh mesh = to_mesh(generate_shape(shape, parameters));
+  write_via_temporary(out, [&](const std::filesystem::path& temporary) {
+    if (!OpenMesh::IO::write_mesh(mesh, temporary.string(), OpenMesh::IO::Options::Default, 17)) {
+      throw IOException(out.string() + ": cannot write (use .obj, .off, .ply or .stl)");
+    }
+  });
+  std::cout << out.string() << ": " << shape << ", " << mesh.n_vertices() << " vertices, "
+            << mesh.n_faces() << " faces\n";
+  return kExitOk;
+}
+
+int main_impl(int argc, char** argv) {
+  CLI::App app{"papercraft: certified developable-strip paper patterns from triangle meshes"};
+  app.set_version_flag("--version", PAPERCRAFT_VERSION);
+  app.require_subcommand(1);
+  app.fallthrough();  // -v/-q may follow the subcommand
+  CommonOptions common;
+  app.add_flag("-v,--verbose", common.verbose, "debug output on stderr");
+  app.add_flag("-q,--quiet", common.quiet, "only warnings and errors on stderr");
+
+  RunRequest run_request;
+  std::vector<std::string> run_inputs;
+  auto* run = app.add_subcommand("run", "run the pipeline on mesh files (OBJ, OFF, PLY, STL)");
+  run->add_option("meshes", run_inputs, "input meshes")->required();
+  run->add_option("-c,--config", run_request.config_file, "pipeline YAML (default: builtin)");
+  run->add_option("-t,--tolerance", run_request.tolerance,
+                  "Hausdorff tolerance: 2% of the largest side, or absolute like 0.004");
+  run->add_option("-o,--out", run_request.output, "output folder (default: out)");
+  run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
+      ->check(CLI::NonNegativeNumber);
+  auto* height = run->add_option("--height", run_request.height_mm,
+                                 "size in mm of the model's largest side on paper")
+                     ->check(CLI::PositiveNumber);
+  run->add_option("--scale", run_request.scale, "mm on paper per model unit")
+      ->check(CLI::PositiveNumber)
+      ->excludes(height);
+
+  std::string job_file;
+  auto* batch = app.add_subcommand("batch", "run a batch job file (YAML: inputs, output, ...)");
+  batch->add_option("job", job_file, "job YAML")->required();
+  int batch_threads = -1;
+  batch->add_option("-j,--threads", batch_threads, "override the job's thread count");
+
+  auto* nodes = app.add_subcommand("nodes", "list node implementations, ports and parameters");
+
+  std::string validate_file;
+  auto* validate = app.add_subcommand("validate", "check a pipeline config without running it");
+  validate->add_option("config", validate_file, "pipeline YAML")->required();
+
+  std::string shape;
+  std::filesystem::path shape_out;
+  std::vector<std::string> shape_params;
+  bool list_shapes = false;
+  auto* gen = app.add_subcommand("generate", "write an analytic test mesh");
+  gen->add_option("shape", shape, "shape name (--list shows them)");
+  gen->add_option("out", shape_out, "output mesh file (.obj, .off, .ply, .stl)");
+  gen->add_option("-p,--param", shape_params, "shape parameter NAME=VALUE (repeatable)");
+  gen->add_flag("--list", list_shapes, "list shapes and their parameters");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kExitOk : kExitUsage;
+  }
+  setup_logging(common);
+
+  try {
+    if (*run) {
+      for (const auto& input : run_inputs) run_request.inputs.emplace_back(input);
+      return execute(run_request, common);
+    }
+    if (*batch) {
+      const BatchJob job = load_batch_job(job_file);
+      RunRequest request;
+      request.inputs = select_shard(job.inputs, job.shard_index, job.shard_count);
+      if (job.config) request.config_file = job.config->string();
+      if (job.tolerance) request.tolerance = job.tolerance->to_string();
+      request.output = job.output;
+      request.threads = batch_threads >= 0 ? batch_threads : job.threads.value_or(-1);
+      request.height_mm = job.height_mm;
+      if (job.shard_count > 1) {
+        spdlog::info("shard {}/{}: {} of {} inputs", job.shard_index + 1, job.shard_count,
+                     request.inputs.size(), job.inputs.size());
+      }
+      return execute(request, common);
+    }
+    if (*nodes) {
+      print_nodes(builtin_registry());
+      return kExitOk;
+    }
+    if (*validate) {
+      const PipelineConfig config = load_pipeline_config(validate_file, builtin_registry());
+      int back = 0;
+      for (const auto& e : config.edges) back += e.back ? 1 : 0;
+      std::cout << validate_file << ": ok (" << config.nodes.size() << " nodes, "
+                << config.edges.size() << " edges, " << back << " back edge(s))\n";
+      return kExitOk;
+    }
+    if (*gen) {
+      if (list_shapes || shape.empty()) {
+        for (const auto& name : shape_names()) {
+          std::cout << name << "\n";
+          for (const auto& p : shape_parameters(name)) {
+            std::cout << "    " << p.name << " (default " << p.default_value << "): " << p.description
+                      << "\n";
+          }
+        }
+        return shape.empty() && !list_shapes ? kExitUsage : kExitOk;
+      }
+      if (shape_out.empty()) throw InvalidInputException("generate: missing the output file");
+      return generate(shape, shape_out, shape_params);
+    }
+  } catch (const ConfigException& e) {
+    spdlog::error("{}", e.what());
+    return kExitUsage;
+  } catch (const InvalidInputException& e) {
+    spdlog::error("{}", e.what());
+    return kExitUsage;
+  } catch (const IOException& e) {
+    spdlog::error("{}", e.what());
+    return kExitUsage;
+  } catch (const std::exception& e) {
+    spdlog::critical("internal error: {}", e.what());
+    return kExitInternal;
+  }
+  return kExitUsage;
+}
+
+}  // namespace
+}  // namespace papercraft
+
+int main(int argc, char** argv) { return papercraft::main_impl(argc, argv); }

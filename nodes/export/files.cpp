@@ -1,0 +1,124 @@
+#include "nodes/export/files.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+#include "core/bvh.h"
+
+namespace papercraft {
+
+namespace {
+
+void append_number(std::string& out, double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  out += buffer;
+}
+
+const char* kind_name(EdgeKind kind) {
+  switch (kind) {
+    case EdgeKind::Cut: return "cut";
+    case EdgeKind::Seam: return "seam";
+    case EdgeKind::Open: return "open";
+  }
+  return "cut";
+}
+
+}  // namespace
+
+std::string approximation_obj(const std::vector<const RuledStrip*>& strips) {
+  std::string out = "# papercraft approximation: one group per 3D strip\n";
+  std::size_t base = 1;
+  for (std::size_t s = 0; s < strips.size(); ++s) {
+    const TriangleMesh& mesh = strips[s]->mesh;
+    out += "g strip_" + std::to_string(s) + "\n";
+    for (const Vec3& p : mesh.vertices) {
+      out += "v ";
+      append_number(out, p.x());
+      out += ' ';
+      append_number(out, p.y());
+      out += ' ';
+      append_number(out, p.z());
+      out += '\n';
+    }
+    for (const Triangle& t : mesh.triangles) {
+      out += "f " + std::to_string(base + t[0]) + " " + std::to_string(base + t[1]) + " " +
+             std::to_string(base + t[2]) + "\n";
+    }
+    base += mesh.vertices.size();
+  }
+  return out;
+}
+
+std::string strips_json(const std::vector<FlatStrip>& strips) {
+  nlohmann::json root;
+  root["strips"] = nlohmann::json::array();
+  for (const FlatStrip& strip : strips) {
+    nlohmann::json s;
+    s["id"] = strip.id;
+    s["source_strip"] = strip.source_strip;
+    s["vertices3d"] = nlohmann::json::array();
+    for (const Vec3& p : strip.vertices3d) s["vertices3d"].push_back({p.x(), p.y(), p.z()});
+    s["vertices2d"] = nlohmann::json::array();
+    for (const Vec2& p : strip.vertices2d) s["vertices2d"].push_back({p.x(), p.y()});
+    s["triangles"] = nlohmann::json::array();
+    for (const Triangle& t : strip.triangles) s["triangles"].push_back({t[0], t[1], t[2]});
+    if (!strip.uvs.empty()) {
+      s["uv"] = nlohmann::json::array();
+      for (const Vec2& p : strip.uvs) s["uv"].push_back({p.x(), p.y()});
+    }
+    s["boundary"] = nlohmann::json::array();
+    for (const BoundaryEdge& e : strip.boundary) {
+      nlohmann::json edge = {{"v0", e.v0}, {"v1", e.v1}, {"kind", kind_name(e.kind)}};
+      if (e.kind == EdgeKind::Seam) {
+        edge["neighbour"] = e.neighbour_strip;
+        edge["label"] = e.label;
+      }
+      s["boundary"].push_back(std::move(edge));
+    }
+    root["strips"].push_back(std::move(s));
+  }
+  return root.dump(1) + "\n";
+}
+
+std::vector<double> vertex_distances(const Mesh& mesh, const TriangleMesh& to) {
+  std::vector<double> distances(mesh.n_vertices(), 0.0);
+  if (to.empty()) return distances;
+  const TriangleBvh bvh(to);
+  for (auto v : mesh.vertices()) distances[v.idx()] = bvh.closest(to_eigen(mesh.point(v))).distance;
+  return distances;
+}
+
+std::string error_ply(const Mesh& mesh, const std::vector<double>& distances, double red_at) {
+  std::ostringstream out;
+  out << "ply\nformat ascii 1.0\ncomment papercraft error map: distance to the approximation\n"
+      << "element vertex " << mesh.n_vertices()
+      << "\nproperty double x\nproperty double y\nproperty double z\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "property double quality\nelement face " << mesh.n_faces()
+      << "\nproperty list uchar int vertex_indices\nend_header\n";
+  out.precision(17);
+  for (auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    const double d = distances[v.idx()];
+    const double t = red_at > 0 ? std::clamp(d / red_at, 0.0, 1.0) : 0.0;
+    // green -> blue -> red, as the paper's error maps
+    const double r = t < 0.5 ? 0.0 : (t - 0.5) * 2.0;
+    const double g = t < 0.5 ? 1.0 - 2.0 * t : 0.0;
+    const double b = t < 0.5 ? 2.0 * t : 1.0 - (t - 0.5) * 2.0;
+    out << p[0] << ' ' << p[1] << ' ' << p[2] << ' ' << static_cast<int>(255 * r + 0.5) << ' '
+        << static_cast<int>(255 * g + 0.5) << ' ' << static_cast<int>(255 * b + 0.5) << ' ' << d
+        << '\n';
+  }
+  for (auto f : mesh.faces()) {
+    out << 3;
+    for (auto v : f.vertices()) out << ' ' << v.idx();
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace papercraft

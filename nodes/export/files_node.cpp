@@ -1,0 +1,151 @@
+// export.files — writes the per-model outputs of DESIGN.md section 4 into <out>/<name>/:
+// report.json, approximation.obj, strips.json, error.ply, pattern.pdf, pattern-NN.svg.
+// Every file is written to a temporary name and renamed into place.
+//
+//   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply], preset: print}}
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/atomic_file.h"
+#include "graph/messages.h"
+#include "graph/model_run.h"
+#include "graph/registry.h"
+#include "nodes/export/files.h"
+#include "nodes/export/pdf.h"
+#include "nodes/export/report.h"
+#include "nodes/export/svg.h"
+#include "nodes/layout/pages.h"
+
+namespace papercraft {
+
+namespace {
+
+bool wants(const std::vector<std::string>& formats, const std::string& format) {
+  return std::find(formats.begin(), formats.end(), format) != formats.end();
+}
+
+nlohmann::json vec3_json(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+
+}  // namespace
+
+nlohmann::json model_report(const ModelRun& model, const ModelStrips* strips) {
+  nlohmann::json report;
+  report["version"] = PAPERCRAFT_VERSION;
+  nlohmann::json input = {{"path", model.input_path.string()}, {"name", model.name}};
+  if (strips && strips->model) {
+    const MeshSummary& s = strips->model->summary;
+    input["vertices"] = s.vertices;
+    input["faces"] = s.faces;
+    input["bounding_box"] = {{"min", vec3_json(s.box_min)}, {"max", vec3_json(s.box_max)}};
+    input["largest_side"] = s.largest_side;
+    input["boundary_loops"] = s.boundary_loops;
+    input["components"] = s.components;
+    input["euler_characteristic"] = s.euler_characteristic;
+    input["has_uvs"] = s.has_uvs;
+  }
+  report["input"] = input;
+  const ToleranceSpec& spec = model.settings->tolerance;
+  const double largest = model.largest_side.load();
+  const double absolute = model.tolerance.load();
+  report["tolerance"] = {{"given", spec.to_string()},
+                         {"absolute", absolute},
+                         {"relative_percent", largest > 0 ? 100.0 * absolute / largest : 0.0}};
+  const auto results = model.results();
+  auto value = [&](const std::string& key) {
+    auto it = results.find(key);
+    return it == results.end() ? 0.0 : it->second;
+  };
+  const double bound = value("hausdorff_bound");
+  report["result"] = {
+      {"certified", value("certified") > 0.5},
+      {"hausdorff_bound", bound},
+      {"hausdorff_bound_percent", largest > 0 ? 100.0 * bound / largest : 0.0},
+      {"strips_3d", static_cast<long>(value("strips_3d"))},
+      {"flat_strips_before_merge", static_cast<long>(value("flat_strips_before_merge"))},
+      {"flat_strips", static_cast<long>(value("flat_strips"))},
+      {"pages", static_cast<long>(value("pages"))},
+      {"shelf_pages", static_cast<long>(value("shelf_pages"))},
+      {"segments", static_cast<long>(value("segments"))},
+      {"cuts", static_cast<long>(value("cuts"))},
+      {"mm_per_unit", value("mm_per_unit")}};
+  nlohmann::json nodes = nlohmann::json::object();
+  for (std::size_t i = 0; i < model.node_labels.size(); ++i) {
+    nodes[model.node_labels[i].first] = {
+        {"impl", model.node_labels[i].second},
+        {"calls", model.node_stats[i].calls.load()},
+        {"seconds", model.node_stats[i].nanoseconds.load() * 1e-9}};
+  }
+  report["timing"] = {{"total_seconds", model.seconds()}, {"nodes", nodes}};
+  report["threads"] = model.settings->threads;
+  report["config"] = {{"file", model.settings->config_file},
+                      {"text", model.settings->config_text}};
+  report["notes"] = model.notes();
+  return report;
+}
+
+void register_export_files(Registry& registry) {
+  registry.add(
+      {"export.files", "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
+       MessageType::of<Pattern>(), false, {},
+       {{"formats", ParamType::StringList, "[pdf, svg, obj, json, ply]",
+         "which files to write besides report.json", {"pdf", "svg", "obj", "json", "ply"}},
+        {"preset", ParamType::String, "print",
+         "colours and line styles: print, laser (cut red, score blue) or cutter",
+         {"print", "laser", "cutter"}}},
+       [](const Params& params) {
+         const std::vector<std::string> formats = params.strings("formats");
+         StyleOptions style;
+         style.preset = style_preset_from_name(params.string("preset"));
+         return make_body([formats, style](const Envelope& in, Emitter&) {
+           const Pattern& pattern = in.get<Pattern>();
+           const ModelStrips& strips = *pattern.strips;
+           ModelRun& model = *in.model;
+           const std::filesystem::path dir = model.output_dir();
+           if (wants(formats, "obj")) {
+             std::vector<const RuledStrip*> strips3d;
+             for (const auto& s : strips.strips3d) strips3d.push_back(s->strip.get());
+             write_file_atomic(dir / "approximation.obj", approximation_obj(strips3d));
+           }
+           if (wants(formats, "json")) write_file_atomic(dir / "strips.json", strips_json(strips.flat));
+           if (wants(formats, "ply") && strips.model) {
+             TriangleMesh all;
+             for (const auto& s : strips.strips3d) {
+               const int base = static_cast<int>(all.vertices.size());
+               all.vertices.insert(all.vertices.end(), s->strip->mesh.vertices.begin(),
+                                   s->strip->mesh.vertices.end());
+               for (const Triangle& t : s->strip->mesh.triangles) {
+                 all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+               }
+             }
+             const auto distances = vertex_distances(*strips.model->mesh, all);
+             double worst = 0.0;
+             for (double d : distances) worst = std::max(worst, d);
+             model.set_result("max_vertex_distance", worst);
+             write_file_atomic(dir / "error.ply",
+                               error_ply(*strips.model->mesh, distances, model.tolerance.load()));
+           }
+           if (pattern.layout) {
+             const PatternLayout& layout = *pattern.layout;
+             if (wants(formats, "svg")) {
+               for (std::size_t page = 0; page < layout.pages.size(); ++page) {
+                 char name[32];
+                 std::snprintf(name, sizeof name, "pattern-%02zu.svg", page + 1);
+                 write_file_atomic(dir / name,
+                                   pattern_page_svg(layout, static_cast<int>(page), style));
+               }
+             }
+             if (wants(formats, "pdf")) {
+               write_via_temporary(dir / "pattern.pdf", [&](const std::filesystem::path& tmp) {
+                 write_pattern_pdf(layout, tmp, style);
+               });
+             }
+           }
+           write_file_atomic(dir / "report.json", model_report(model, &strips).dump(2) + "\n");
+         });
+       }});
+}
+
+}  // namespace papercraft

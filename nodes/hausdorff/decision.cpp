@@ -1,0 +1,42 @@
+#include "nodes/hausdorff/decision.h"
+
+#include "core/bvh.h"
+
+namespace papercraft {
+
+StripVerdict judge_strip(
+    const Mesh& part, const RuledStrip& strip, int hole_count, double tolerance,
+    const std::function<HausdorffResult(const TriangleMesh&, const TriangleMesh&, double)>&
+        decide) {
+  StripVerdict verdict;
+  const TriangleMesh part_mesh = to_triangle_mesh(part);
+  if (strip.mesh.empty() ||
+      surface_area(strip.mesh) < kDegenerateStripArea * tolerance * tolerance) {
+    TriangleBvh bvh(strip.mesh.empty() ? TriangleMesh{{strip.mesh.vertices.front()}, {{0, 0, 0}}}
+                                       : strip.mesh);
+    for (const Vec3& p : part_mesh.vertices) {
+      const double d = bvh.closest(p).distance;
+      if (d >= verdict.witness_error) {
+        verdict.witness_error = d;
+        verdict.witness = p;
+      }
+    }
+    return verdict;
+  }
+  const HausdorffResult result = decide(part_mesh, strip.mesh, tolerance);
+  verdict.certified = result.certified;
+  if (!result.within) {
+    verdict.witness = result.witness.point;
+    verdict.witness_error = result.witness.distance_lower_bound;
+    return verdict;
+  }
+  if (hole_count > 0) {
+    verdict.hole = 0;  // holes are split regardless of the error (paper 3.2.2)
+    return verdict;
+  }
+  verdict.accept = true;
+  verdict.upper_bound = result.upper;
+  return verdict;
+}
+
+}  // namespace papercraft

@@ -1,0 +1,71 @@
+// load.openmesh — read OBJ/OFF/PLY/STL with OpenMesh's readers, validate, repair what is
+// safe, and fix the model's absolute tolerance from its bounding box.
+//
+//   load: {impl: load.openmesh, params: {repair: true}, to: [segment]}
+
+#include <spdlog/spdlog.h>
+
+#include "core/errors.h"
+#include "graph/messages.h"
+#include "graph/model_run.h"
+#include "graph/pipeline.h"
+#include "graph/registry.h"
+#include "nodes/load/openmesh.h"
+
+namespace papercraft {
+
+MeshSummary summarize(const Mesh& mesh, bool has_uvs) {
+  MeshSummary s;
+  s.vertices = mesh.n_vertices();
+  s.faces = mesh.n_faces();
+  const TriangleMesh triangles = to_triangle_mesh(mesh);
+  if (!triangles.vertices.empty()) {
+    const auto box = bounding_box(triangles.vertices);
+    s.box_min = box[0];
+    s.box_max = box[1];
+    s.largest_side = (box[1] - box[0]).maxCoeff();
+  }
+  s.boundary_loops = static_cast<int>(boundary_loops(mesh).size());
+  s.components = connected_components(mesh);
+  s.euler_characteristic = euler_characteristic(mesh);
+  s.has_uvs = has_uvs;
+  return s;
+}
+
+void register_load_openmesh(Registry& registry) {
+  registry.add(
+      {"load.openmesh", "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
+       MessageType::of<Job>(), false, {{"out", MessageType::of<Model>()}},
+       {{"repair", ParamType::Boolean, "true",
+         "remove unreferenced vertices and merge exactly duplicate vertices (logged)"},
+        {"max_faces", ParamType::Integer, "50000000", "refuse larger meshes"}},
+       [](const Params& params) {
+         LoadOptions options;
+         options.repair = params.boolean("repair");
+         options.max_faces = static_cast<std::size_t>(params.integer("max_faces"));
+         return make_body([options](const Envelope& in, Emitter& out) {
+           const Job& job = in.get<Job>();
+           LoadedMesh loaded = load_mesh(job.input, options);
+           for (const auto& repair : loaded.repairs) {
+             spdlog::warn("{}: {}", job.input.string(), repair);
+             in.model->note(repair);
+           }
+           Model model;
+           model.summary = summarize(loaded.mesh, loaded.has_uvs);
+           if (!(model.summary.largest_side > 0)) {
+             throw InvalidInputException(job.input.string() +
+                                         ": all vertices coincide (the bounding box is a point)");
+           }
+           model.texture_path = loaded.texture_path;
+           model.mesh = std::make_shared<const Mesh>(std::move(loaded.mesh));
+           ModelRun& run = *in.model;
+           run.largest_side.store(model.summary.largest_side);
+           run.tolerance.store(run.settings->tolerance.absolute(model.summary.largest_side));
+           run.set_result("largest_side", model.summary.largest_side);
+           run.set_result("input_faces", static_cast<double>(model.summary.faces));
+           out.emit(0, std::move(model));
+         });
+       }});
+}
+
+}  // namespace papercraft

@@ -1,0 +1,47 @@
+// Adapter support shared by merge.congruent and merge.none (see collect.h).
+
+#include <algorithm>
+
+#include "nodes/merge/collect.h"
+#include "nodes/unfold/seams.h"
+
+namespace papercraft {
+
+namespace {
+
+// "0.10.2" -> {0, 10, 2}
+std::vector<int> path_key(const std::string& path) {
+  std::vector<int> key;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    std::size_t dot = path.find('.', start);
+    if (dot == std::string::npos) dot = path.size();
+    key.push_back(std::stoi(path.substr(start, dot - start)));
+    start = dot + 1;
+  }
+  return key;
+}
+
+}  // namespace
+
+ModelStrips collect_model_strips(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded) {
+  std::sort(unfolded.begin(), unfolded.end(), [](const auto& a, const auto& b) {
+    return path_key(a->strip->candidate->part.path) < path_key(b->strip->candidate->part.path);
+  });
+  ModelStrips strips;
+  for (const auto& u : unfolded) {
+    const int source = static_cast<int>(strips.strips3d.size());
+    strips.strips3d.push_back(u->strip);
+    if (!strips.model) strips.model = u->strip->candidate->part.model;
+    for (FlatStrip flat : u->flat) {
+      flat.id = static_cast<int>(strips.flat.size());
+      flat.source_strip = source;
+      strips.flat.push_back(std::move(flat));
+    }
+  }
+  strips.flat_before_merge = strips.flat.size();
+  label_seams(strips.flat);
+  return strips;
+}
+
+}  // namespace papercraft

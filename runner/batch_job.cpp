@@ -1,0 +1,147 @@
+#include "runner/batch_job.h"
+
+#include <glob.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace papercraft {
+
+std::vector<std::filesystem::path> expand_pattern(const std::string& pattern) {
+  std::vector<std::filesystem::path> out;
+  if (pattern.find_first_of("*?[") == std::string::npos) {
+    if (std::filesystem::exists(pattern)) out.emplace_back(pattern);
+    return out;
+  }
+  glob_t matches{};
+  if (::glob(pattern.c_str(), 0, nullptr, &matches) == 0) {
+    for (std::size_t i = 0; i < matches.gl_pathc; ++i) out.emplace_back(matches.gl_pathv[i]);
+  }
+  ::globfree(&matches);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<std::filesystem::path> select_shard(const std::vector<std::filesystem::path>& inputs,
+                                                int shard_index, int shard_count) {
+  std::vector<std::filesystem::path> out;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    if (static_cast<int>(i % shard_count) == shard_index) out.push_back(inputs[i]);
+  }
+  return out;
+}
+
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& file, const YAML::Node& node,
+                       const std::string& message) {
+  const YAML::Mark m = node.Mark();
+  throw ConfigException(file.string() + ":" + std::to_string(m.line + 1) + ":" +
+                        std::to_string(m.column + 1) + ": " + message);
+}
+
+std::string scalar(const std::filesystem::path& file, const YAML::Node& node,
+                   const std::string& what) {
+  if (!node.IsScalar()) fail(file, node, "expected " + what);
+  return node.Scalar();
+}
+
+}  // namespace
+
+BatchJob load_batch_job(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IOException(path.string() + ": cannot read the job file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  YAML::Node root;
+  try {
+    root = YAML::Load(text.str());
+  } catch (const YAML::ParserException& e) {
+    throw ConfigException(path.string() + ":" + std::to_string(e.mark.line + 1) + ":" +
+                          std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) fail(path, root, "expected a map with 'inputs' and 'output'");
+  const std::vector<std::string> allowed = {"inputs",    "output",  "config",   "tolerance",
+                                            "threads",   "height_mm", "shard"};
+  std::set<std::string> seen;
+  for (auto it = root.begin(); it != root.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    if (!seen.insert(key).second) fail(path, it->first, "duplicate key '" + key + "'");
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      fail(path, it->first,
+           "unknown key '" + key +
+               "' (expected inputs, output, config, tolerance, threads, height_mm, shard)");
+    }
+  }
+  if (!root["inputs"]) fail(path, root, "missing key 'inputs'");
+  const std::filesystem::path base = path.parent_path();
+  auto resolve = [&](const std::string& p) {
+    const std::filesystem::path candidate(p);
+    return candidate.is_absolute() ? candidate : base / candidate;
+  };
+  BatchJob job;
+  YAML::Node inputs = root["inputs"];
+  std::vector<YAML::Node> patterns;
+  if (inputs.IsScalar()) {
+    patterns.push_back(inputs);
+  } else if (inputs.IsSequence()) {
+    for (std::size_t i = 0; i < inputs.size(); ++i) patterns.push_back(inputs[i]);
+  } else {
+    fail(path, inputs, "expected a list of paths or glob patterns");
+  }
+  std::set<std::filesystem::path> unique;
+  for (const auto& p : patterns) {
+    const std::string pattern = resolve(scalar(path, p, "a path or glob pattern")).string();
+    const auto matches = expand_pattern(pattern);
+    if (matches.empty()) fail(path, p, "no file matches '" + pattern + "'");
+    for (const auto& m : matches) {
+      if (unique.insert(m.lexically_normal()).second) job.inputs.push_back(m.lexically_normal());
+    }
+  }
+  if (root["output"]) job.output = resolve(scalar(path, root["output"], "an output folder"));
+  if (root["config"]) job.config = resolve(scalar(path, root["config"], "a config file"));
+  if (root["tolerance"]) {
+    try {
+      job.tolerance = parse_tolerance(scalar(path, root["tolerance"], "a tolerance"));
+    } catch (const std::invalid_argument& e) {
+      fail(path, root["tolerance"], e.what());
+    }
+  }
+  auto number = [&](const char* key, double min) {
+    const YAML::Node node = root[key];
+    try {
+      std::size_t used = 0;
+      const std::string text = scalar(path, node, "a number");
+      const double value = std::stod(text, &used);
+      if (used != text.size() || value < min) throw std::invalid_argument("");
+      return value;
+    } catch (const std::logic_error&) {
+      fail(path, node, std::string("expected a number >= ") + std::to_string(static_cast<int>(min)) +
+                           " for '" + key + "'");
+    }
+  };
+  if (root["threads"]) job.threads = static_cast<int>(number("threads", 0));
+  if (root["height_mm"]) job.height_mm = number("height_mm", 0);
+  if (root["shard"]) {
+    const std::string shard = scalar(path, root["shard"], "a shard like 1/4");
+    const auto slash = shard.find('/');
+    try {
+      if (slash == std::string::npos) throw std::invalid_argument("");
+      const int index = std::stoi(shard.substr(0, slash));
+      const int count = std::stoi(shard.substr(slash + 1));
+      if (count < 1 || index < 1 || index > count) throw std::invalid_argument("");
+      job.shard_index = index - 1;
+      job.shard_count = count;
+    } catch (const std::logic_error&) {
+      fail(path, root["shard"], "expected a shard like 1/4 (the first of four machines)");
+    }
+  }
+  return job;
+}
+
+}  // namespace papercraft
