@@ -1,0 +1,271 @@
+// Certified Hausdorff decision and distance against CGAL's bounded-error Hausdorff distance.
+//
+// Pair: mesh A (PAPERCRAFT_HAUSDORFF_MESH, an OFF/OBJ/PLY file, else a generated bumpy torus
+// of 20k triangles) and B = A decimated to a quarter of its vertices (OpenMesh quadric
+// decimater), the shape of a coarse approximation. H is measured once (our value mode,
+// error bound 1e-4 H). Everything runs on one thread unless the name says otherwise.
+//
+//   build-bench/bench/hausdorff_bench                       # all benchmarks
+//   PAPERCRAFT_HAUSDORFF_MESH=dragon.off build-bench/bench/hausdorff_bench --summary
+//
+// --summary prints one-shot timings of the acceptance criterion instead: our decision at
+// tau = 2H vs CGAL's value at error bound 0.05 tau, their ratio, and whether the values agree.
+
+#include <benchmark/benchmark.h>
+#include <tbb/global_control.h>
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Tools/Decimater/DecimaterT.hh>
+#include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+
+#include "core/bvh.h"
+#include "core/mesh.h"
+#include "nodes/hausdorff/bounded.h"
+#include "nodes/hausdorff/sampled.h"
+
+#ifdef PAPERCRAFT_HAVE_CGAL
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Surface_mesh.h>
+#endif
+
+namespace papercraft {
+namespace {
+
+Mesh bumpy_torus(int rings, int sides) {
+  Mesh mesh;
+  std::vector<Mesh::VertexHandle> handles;
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      const double u = 2 * M_PI * i / rings, v = 2 * M_PI * j / sides;
+      const double r = 0.3 + 0.02 * std::sin(7 * u) * std::cos(5 * v);
+      handles.push_back(
+          mesh.add_vertex(Mesh::Point((1 + r * std::cos(v)) * std::cos(u),
+                                      (1 + r * std::cos(v)) * std::sin(u), r * std::sin(v))));
+    }
+  }
+  auto at = [&](int i, int j) { return handles[(i % rings) * sides + (j % sides)]; };
+  for (int i = 0; i < rings; ++i) {
+    for (int j = 0; j < sides; ++j) {
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  }
+  return mesh;
+}
+
+struct Pair {
+  TriangleMesh a, b;
+  std::optional<TriangleBvh> tree_a, tree_b;
+  double hausdorff = 0.0;  // midpoint of a tight certified interval
+  std::string name;
+};
+
+const Pair& pair() {
+  static const Pair instance = [] {
+    Pair p;
+    Mesh mesh;
+    const char* path = std::getenv("PAPERCRAFT_HAUSDORFF_MESH");
+    if (path && OpenMesh::IO::read_mesh(mesh, path)) {
+      p.name = path;
+    } else {
+      mesh = bumpy_torus(100, 100);
+      p.name = "bumpy torus";
+    }
+    mesh.triangulate();
+    p.a = to_triangle_mesh(mesh);
+    OpenMesh::Decimater::DecimaterT<Mesh> decimater(mesh);
+    OpenMesh::Decimater::ModQuadricT<Mesh>::Handle quadric;
+    decimater.add(quadric);
+    decimater.initialize();
+    decimater.decimate_to(mesh.n_vertices() / 4);
+    mesh.garbage_collection();
+    p.b = to_triangle_mesh(mesh);
+    p.tree_a.emplace(p.a);
+    p.tree_b.emplace(p.b);
+    const auto box = bounding_box(p.a.vertices);
+    const double diagonal = (box[1] - box[0]).norm();
+    const HausdorffResult coarse =
+        certified_hausdorff_distance(*p.tree_a, *p.tree_b, 1e-2 * diagonal);
+    const HausdorffResult tight =
+        certified_hausdorff_distance(*p.tree_a, *p.tree_b, 1e-4 * coarse.upper);
+    p.hausdorff = 0.5 * (tight.lower + tight.upper);
+    std::fprintf(stderr, "%s: A %zu triangles, B %zu triangles, H in [%.6g, %.6g]\n",
+                 p.name.c_str(), p.a.triangles.size(), p.b.triangles.size(), tight.lower,
+                 tight.upper);
+    return p;
+  }();
+  return instance;
+}
+
+void BM_BvhBuild(benchmark::State& state) {
+  const Pair& p = pair();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  for (auto _ : state) benchmark::DoNotOptimize(TriangleBvh(p.a).node_count());
+  state.counters["triangles"] = static_cast<double>(p.a.triangles.size());
+}
+BENCHMARK(BM_BvhBuild)->Unit(benchmark::kMillisecond);
+
+void BM_ClosestPoint(benchmark::State& state) {
+  const Pair& p = pair();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(p.tree_b->closest(p.a.vertices[i]).distance);
+    if (++i == p.a.vertices.size()) i = 0;
+  }
+}
+BENCHMARK(BM_ClosestPoint);
+
+// Argument: tau as a percentage of H.
+void BM_CertifiedWithin(benchmark::State& state) {
+  const Pair& p = pair();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  const double tau = state.range(0) / 100.0 * p.hausdorff;
+  HausdorffResult r;
+  for (auto _ : state) r = certified_hausdorff_within(*p.tree_a, *p.tree_b, tau);
+  state.counters["within"] = r.within;
+  state.counters["evaluations"] = static_cast<double>(r.evaluations);
+}
+BENCHMARK(BM_CertifiedWithin)->Arg(200)->Arg(110)->Arg(90)->Arg(50)->Unit(benchmark::kMillisecond);
+
+void BM_CertifiedWithinFromMeshes(benchmark::State& state) {  // includes both tree builds
+  const Pair& p = pair();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(certified_hausdorff_within(p.a, p.b, 2 * p.hausdorff));
+}
+BENCHMARK(BM_CertifiedWithinFromMeshes)->Unit(benchmark::kMillisecond);
+
+void BM_CertifiedWithinAllThreads(benchmark::State& state) {
+  const Pair& p = pair();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(certified_hausdorff_within(*p.tree_a, *p.tree_b, 2 * p.hausdorff));
+  }
+}
+BENCHMARK(BM_CertifiedWithinAllThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Value mode at error bound 0.05 tau with tau = 2H, i.e. 0.1 H.
+void BM_CertifiedDistance(benchmark::State& state) {
+  const Pair& p = pair();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  HausdorffResult r;
+  for (auto _ : state) r = certified_hausdorff_distance(*p.tree_a, *p.tree_b, 0.1 * p.hausdorff);
+  state.counters["lower"] = r.lower;
+  state.counters["upper"] = r.upper;
+}
+BENCHMARK(BM_CertifiedDistance)->Unit(benchmark::kMillisecond);
+
+void BM_SampledWithin(benchmark::State& state) {
+  const Pair& p = pair();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sampled_hausdorff_within(p.a, p.b, 2 * p.hausdorff));
+}
+BENCHMARK(BM_SampledWithin)->Unit(benchmark::kMillisecond);
+
+#ifdef PAPERCRAFT_HAVE_CGAL
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+SurfaceMesh to_cgal(const TriangleMesh& mesh) {
+  SurfaceMesh result;
+  std::vector<SurfaceMesh::Vertex_index> handles;
+  for (const Vec3& v : mesh.vertices) handles.push_back(result.add_vertex({v.x(), v.y(), v.z()}));
+  for (const Triangle& t : mesh.triangles)
+    result.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+  return result;
+}
+
+struct CgalPair {
+  SurfaceMesh a, b;
+};
+
+const CgalPair& cgal_pair() {
+  static const CgalPair instance{to_cgal(pair().a), to_cgal(pair().b)};
+  return instance;
+}
+
+double cgal_value(double error_bound) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
+      cgal_pair().a, cgal_pair().b, error_bound);
+}
+
+void BM_CgalBoundedErrorDistance(benchmark::State& state) {
+  const double error_bound = 0.1 * pair().hausdorff;
+  double value = 0.0;
+  for (auto _ : state) value = cgal_value(error_bound);
+  state.counters["value"] = value;
+}
+BENCHMARK(BM_CgalBoundedErrorDistance)->Unit(benchmark::kMillisecond);
+
+void BM_CgalIsHausdorffDistanceLarger(benchmark::State& state) {
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const Pair& p = pair();
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(PMP::is_Hausdorff_distance_larger<CGAL::Sequential_tag>(
+        cgal_pair().a, cgal_pair().b, 2 * p.hausdorff, 0.1 * p.hausdorff,
+        CGAL::parameters::use_one_sided_hausdorff(false)));
+  }
+}
+BENCHMARK(BM_CgalIsHausdorffDistanceLarger)->Unit(benchmark::kMillisecond);
+#endif
+
+template <class F>
+double best_seconds(int repeats, F&& f) {
+  double best = 1e300;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    best = std::min(
+        best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return best;
+}
+
+int summary() {
+  const Pair& p = pair();
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  const double tau = 2 * p.hausdorff;
+  HausdorffResult decision, value;
+  const double ours =
+      best_seconds(5, [&] { decision = certified_hausdorff_within(*p.tree_a, *p.tree_b, tau); });
+  const double ours_value = best_seconds(
+      5, [&] { value = certified_hausdorff_distance(*p.tree_a, *p.tree_b, 0.05 * tau); });
+  std::printf("ours: decision at tau = 2H: within=%d upper=%.6g  %.2f ms (one thread)\n",
+              decision.within, decision.upper, 1e3 * ours);
+  std::printf("ours: value at error bound 0.05 tau: [%.6g, %.6g]  %.2f ms\n", value.lower,
+              value.upper, 1e3 * ours_value);
+#ifdef PAPERCRAFT_HAVE_CGAL
+  double cgal = 0.0;
+  const double cgal_seconds = best_seconds(3, [&] { cgal = cgal_value(0.05 * tau); });
+  const bool agree = cgal >= value.lower - 0.05 * tau && cgal <= value.upper + 0.05 * tau;
+  std::printf("CGAL: value at error bound 0.05 tau: %.6g  %.2f ms\n", cgal, 1e3 * cgal_seconds);
+  std::printf("ratio CGAL value / our decision: %.1fx (target >= 5x); values agree: %s\n",
+              cgal_seconds / ours, agree ? "yes" : "NO");
+  return agree && cgal_seconds >= 5 * ours ? 0 : 1;
+#else
+  std::printf("CGAL not found at configure time: no comparison\n");
+  return 0;
+#endif
+}
+
+}  // namespace
+}  // namespace papercraft
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--summary") == 0) return papercraft::summary();
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
