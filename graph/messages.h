@@ -82,6 +82,8 @@ struct RejectedStrip {
   std::shared_ptr<const RuledStrip> strip;
   Vec3 witness = Vec3::Zero();
   double witness_error = 0.0;
+  int witness_side = 0;       // 0: on the part, 1: on the strip
+  int witness_triangle = -1;  // triangle of that surface (-1: unknown)
   int hole = -1;  // index into candidate->holes
 };
 

@@ -7,18 +7,20 @@
 #include <algorithm>
 #include <sstream>
 
+#include <spdlog/spdlog.h>
+
 #include "core/errors.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/registry.h"
-#include "nodes/cut/harmonic.h"
+#include "nodes/cut/through_witness.h"
 
 namespace papercraft {
 
 namespace {
 
 struct CutNodeOptions {
-  CutOptions cut;
+  WitnessCutOptions cut;
   int max_depth = 64;
   long min_faces = 1;
 };
@@ -40,21 +42,17 @@ std::vector<Mesh> cut_part(const RejectedStrip& rejected, const CutNodeOptions& 
   if (candidate.part.depth >= options.max_depth) {
     fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
   }
-  const Eigen::VectorXd field = harmonic_field(part, candidate.first, candidate.second);
-  std::vector<double> values;
-  if (rejected.hole >= 0) {
-    values.push_back(hole_split_value(field, candidate.holes[rejected.hole]));
-  } else {
-    values.push_back(field_value_at(part, field, rejected.witness));
-  }
-  // A witness next to a strip boundary gives a sliver or no cut at all: move inwards.
-  values.push_back(std::clamp(values.front(), 0.1, 0.9));
-  values.push_back(0.5);
-  for (double value : values) {
-    std::vector<Mesh> pieces = cut_along_isoline(part, field, value, options.cut);
-    if (pieces.size() >= 2) return pieces;
-  }
-  fail("no iso-line of the harmonic field splits it");
+  const WitnessCut cut =
+      rejected.hole >= 0
+          ? cut_through_hole(part, candidate.first, candidate.second,
+                             candidate.holes[rejected.hole], options.cut)
+          : cut_through_witness(part, candidate.first, candidate.second, rejected.witness,
+                                options.cut);
+  spdlog::debug("cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {}",
+                candidate.part.path, part.n_faces(), candidate.holes.size(), rejected.hole,
+                rejected.witness_error, cut.across ? "g" : "f", cut.value, cut.pieces.size());
+  if (cut.pieces.empty()) fail("no iso-line through the worst point splits it");
+  return cut.pieces;
 }
 
 }  // namespace
@@ -65,12 +63,22 @@ void register_cut_harmonic(Registry& registry) {
        MessageType::of<RejectedStrip>(), false, {{"out", MessageType::of<Part>()}},
        {{"snap_fraction", ParamType::Number, "0.05",
          "snap an iso-line crossing to a vertex within this fraction of the edge length"},
+        {"positive_weights", ParamType::Boolean, "true",
+         "clamp negative cotangent weights so the field obeys the maximum principle (no "
+         "spurious iso-line loops on obtuse triangles)"},
+        {"margin", ParamType::Number, "0.05",
+         "keep the iso-value at least this far from the strip boundaries (0 and 1)"},
+        {"min_piece_fraction", ParamType::Number, "0.01",
+         "a cut must leave every piece at least this fraction of the part's area"},
         {"max_depth", ParamType::Integer, "64",
          "nested cuts allowed below one segment before the model fails with a message"}},
        [](const Params& params) {
          CutNodeOptions options;
-         options.cut.snap_fraction = params.number("snap_fraction");
+         options.cut.cut.snap_fraction = params.number("snap_fraction");
          options.max_depth = static_cast<int>(params.integer("max_depth"));
+         options.cut.harmonic.clamp_negative_weights = params.boolean("positive_weights");
+         options.cut.margin = params.number("margin");
+         options.cut.min_piece_fraction = params.number("min_piece_fraction");
          return make_body([options](const Envelope& in, Emitter& out) {
            const RejectedStrip& rejected = in.get<RejectedStrip>();
            const Part& parent = rejected.candidate->part;

@@ -19,6 +19,7 @@ StripVerdict judge_strip(
       if (d >= verdict.witness_error) {
         verdict.witness_error = d;
         verdict.witness = p;
+        verdict.witness_side = 0;
       }
     }
     return verdict;
@@ -28,6 +29,8 @@ StripVerdict judge_strip(
   if (!result.within) {
     verdict.witness = result.witness.point;
     verdict.witness_error = result.witness.distance_lower_bound;
+    verdict.witness_side = result.witness.side;
+    verdict.witness_triangle = result.witness.triangle;
     return verdict;
   }
   if (hole_count > 0) {

@@ -17,6 +17,8 @@ struct StripVerdict {
   bool certified = true;
   Vec3 witness = Vec3::Zero();  // on reject by error
   double witness_error = 0.0;
+  int witness_side = 0;       // 0: the witness lies on the part, 1: on the strip
+  int witness_triangle = -1;  // triangle of that surface containing the witness
   int hole = -1;  // on reject because the part has a hole (index into the holes list)
 };
 

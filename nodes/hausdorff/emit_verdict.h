@@ -34,6 +34,8 @@ void decide_and_emit(const Envelope& in, Emitter& out, const Decide& decide) {
   rejected.strip = candidate.strip;
   rejected.witness = verdict.witness;
   rejected.witness_error = verdict.witness_error;
+  rejected.witness_side = verdict.witness_side;
+  rejected.witness_triangle = verdict.witness_triangle;
   rejected.hole = verdict.hole;
   out.emit(1, std::move(rejected));
 }

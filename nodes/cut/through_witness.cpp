@@ -1,0 +1,117 @@
+#include "nodes/cut/through_witness.h"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+
+namespace papercraft {
+
+namespace {
+
+std::vector<double> edge_distances(const Mesh& mesh, int source) {
+  std::vector<double> distance(mesh.n_vertices(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  distance[source] = 0.0;
+  queue.push({0.0, source});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v]) continue;
+    const auto vh = mesh.vertex_handle(v);
+    for (auto h : mesh.voh_range(vh)) {
+      const int w = h.to().idx();
+      const double nd = d + mesh.calc_edge_length(h);
+      if (nd < distance[w]) {
+        distance[w] = nd;
+        queue.push({nd, w});
+      }
+    }
+  }
+  return distance;
+}
+
+// Accepts a cut if it splits the part into pieces none of which is a sliver.
+bool makes_progress(const std::vector<Mesh>& pieces, double area, double min_fraction) {
+  if (pieces.size() < 2) return false;
+  for (const Mesh& p : pieces) {
+    if (surface_area(p) < min_fraction * area) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps) {
+  int current = 0;
+  std::pair<int, int> best{0, 0};
+  double best_distance = -1.0;
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    const auto distance = edge_distances(part, current);
+    int far = current;
+    for (std::size_t v = 0; v < distance.size(); ++v) {
+      if (std::isfinite(distance[v]) && distance[v] > distance[far]) far = static_cast<int>(v);
+    }
+    if (distance[far] > best_distance) {
+      best_distance = distance[far];
+      best = {current, far};
+    }
+    if (far == current) break;
+    current = far;
+  }
+  return best;
+}
+
+WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
+                               const std::vector<int>& second, const Vec3& witness,
+                               const WitnessCutOptions& options) {
+  const double area = surface_area(part);
+  const double lo = options.margin, hi = 1.0 - options.margin;
+  // A fan whose apex lies on its own base loop has no field between its boundaries.
+  std::vector<char> in_first(part.n_vertices(), 0);
+  for (int v : first) in_first[v] = 1;
+  const bool disjoint =
+      std::none_of(second.begin(), second.end(), [&](int v) { return in_first[v] != 0; });
+  Eigen::VectorXd f;
+  if (disjoint) f = harmonic_field(part, first, second, options.harmonic);
+  const double f_witness = disjoint ? field_value_at(part, f, witness) : -1.0;
+  const auto [from, to] = farthest_vertex_pair(part);
+  Eigen::VectorXd g;
+  if (from != to) g = harmonic_field(part, {from}, {to}, options.harmonic);
+  struct Attempt {
+    const Eigen::VectorXd* field;
+    double value;
+    bool across;
+  };
+  std::vector<Attempt> attempts;
+  if (f_witness >= lo && f_witness <= hi) attempts.push_back({&f, f_witness, false});
+  if (g.size() > 0) {
+    attempts.push_back({&g, std::clamp(field_value_at(part, g, witness), lo, hi), true});
+  }
+  if (disjoint) attempts.push_back({&f, 0.5, false});
+  if (g.size() > 0) attempts.push_back({&g, 0.5, true});
+  for (const Attempt& attempt : attempts) {
+    std::vector<Mesh> pieces = cut_along_isoline(part, *attempt.field, attempt.value, options.cut);
+    if (makes_progress(pieces, area, options.min_piece_fraction)) {
+      return {std::move(pieces), attempt.value, attempt.across};
+    }
+  }
+  return {};
+}
+
+WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
+                            const std::vector<int>& second, const std::vector<int>& loop,
+                            const WitnessCutOptions& options) {
+  const double area = surface_area(part);
+  const Eigen::VectorXd f = harmonic_field(part, first, second, options.harmonic);
+  const double value = hole_split_value(f, loop);
+  std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut);
+  if (makes_progress(pieces, area, options.min_piece_fraction)) return {std::move(pieces), value};
+  // The hole lies where f hardly varies: cut across the part through the hole instead.
+  Vec3 centre = Vec3::Zero();
+  for (int v : loop) centre += to_eigen(part.point(part.vertex_handle(v)));
+  centre /= static_cast<double>(loop.size());
+  return cut_through_witness(part, first, second, centre, options);
+}
+
+}  // namespace papercraft

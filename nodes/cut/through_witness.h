@@ -1,0 +1,50 @@
+#pragma once
+// Where to cut a rejected part (paper 3.2.2, with the guards a real mesh needs).
+//
+// The paper cuts along the iso-line, through the worst point, of the harmonic field f that
+// is 0 on the strip's first boundary and 1 on its second. That fails to make progress when
+// the worst point sits where f is (nearly) 0 or 1 — for example a long thin tongue of the
+// part hanging off one boundary, where f stays near 0 and every iso-line runs along the
+// tongue. Then we cut across the part instead, along an iso-line of the harmonic field
+// between the part's two (approximately) farthest vertices, through the same point.
+
+#include <vector>
+
+#include "core/mesh.h"
+#include "nodes/cut/harmonic.h"
+
+namespace papercraft {
+
+struct WitnessCutOptions {
+  CutOptions cut;
+  HarmonicOptions harmonic;
+  /// Iso-values closer than this to 0 or 1 would shave a sliver off a boundary.
+  double margin = 0.05;
+  /// A cut is only taken if its smallest piece has at least this fraction of the area.
+  double min_piece_fraction = 0.01;
+};
+
+struct WitnessCut {
+  std::vector<Mesh> pieces;  // empty when no cut made progress
+  double value = 0.0;        // iso-value used
+  bool across = false;       // true: the farthest-vertex field was used
+};
+
+/// Cuts `part` through `witness` (a point on or near it). `first`/`second` are the strip's
+/// boundary vertices (f = 0 and 1). Tries, in order: f through the witness (if it is inside
+/// the margins), the farthest-vertex field through the witness, f at 0.5, that field at 0.5.
+/// \pre part is connected; first and second are non-empty and disjoint.
+WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
+                               const std::vector<int>& second, const Vec3& witness,
+                               const WitnessCutOptions& options = {});
+
+/// Cuts `part` through the hole `loop` (iso-line of f between its extremes on the hole).
+WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
+                            const std::vector<int>& second, const std::vector<int>& loop,
+                            const WitnessCutOptions& options = {});
+
+/// The two vertices found by farthest-point sweeps over the edge graph (approximately the
+/// pair of largest geodesic distance).
+std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps = 4);
+
+}  // namespace papercraft

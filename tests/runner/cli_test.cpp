@@ -1,0 +1,141 @@
+// The papercraft command: subcommands, exit codes, batch behaviour with bad inputs.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+
+#include "support/pipeline_run.h"
+
+namespace papercraft {
+namespace {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+CommandResult run_command(const std::string& arguments) {
+  const std::string command = std::string(PAPERCRAFT_BINARY) + " " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+const std::string kSource = PAPERCRAFT_SOURCE_DIR;
+
+TEST(Cli, NodesListsEveryStage) {
+  const auto r = run_command("nodes");
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  for (const char* name : {"load.openmesh", "segment.none", "select.geodesic", "select.exhaustive",
+                           "ruled.twist_dp", "hausdorff.bounded", "hausdorff.sampled",
+                           "cut.harmonic", "unfold.sequential", "merge.congruent", "layout.pages",
+                           "export.files"}) {
+    EXPECT_NE(r.output.find(name), std::string::npos) << name;
+  }
+  EXPECT_NE(r.output.find("param precision (number, default 0.05)"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("output: reject -> RejectedStrip"), std::string::npos);
+}
+
+TEST(Cli, ValidateEveryShippedConfig) {
+  for (const auto& entry : std::filesystem::directory_iterator(kSource + "/configs")) {
+    const auto r = run_command("validate " + entry.path().string());
+    EXPECT_EQ(r.exit_code, 0) << entry.path() << "\n" << r.output;
+    EXPECT_NE(r.output.find(": ok ("), std::string::npos) << r.output;
+  }
+}
+
+TEST(Cli, ValidateReportsPositionAndExitCode2) {
+  const auto dir = testing::fresh_temp_dir("validate");
+  std::ofstream(dir / "bad.yaml") << "nodes:\n  load: {impl: load.openmesh, to: [nowhere]}\n";
+  const auto r = run_command("validate " + (dir / "bad.yaml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("bad.yaml:2:36: edge to unknown node 'nowhere'"), std::string::npos)
+      << r.output;
+}
+
+TEST(Cli, GenerateWritesMesh) {
+  const auto dir = testing::fresh_temp_dir("generate");
+  const auto r = run_command("generate torus " + (dir / "torus.off").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "torus.off"));
+  const auto bad = run_command("generate nosuchshape " + (dir / "x.obj").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("sphere"), std::string::npos) << "lists the known shapes";
+  const auto param = run_command("generate sphere " + (dir / "s.obj").string() + " --param radius=-1");
+  EXPECT_EQ(param.exit_code, 2) << param.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "s.obj"));
+}
+
+TEST(Cli, BatchWithABadMeshKeepsTheOthersAndExits1) {
+  const auto dir = testing::fresh_temp_dir("batch");
+  std::filesystem::create_directories(dir / "meshes");
+  ASSERT_EQ(run_command("generate open_cylinder " + (dir / "meshes/a.obj").string()).exit_code, 0);
+  ASSERT_EQ(run_command("generate cone_frustum " + (dir / "meshes/b.off").string()).exit_code, 0);
+  std::ofstream(dir / "meshes/broken.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n";
+  std::ofstream(dir / "job.yaml") << "inputs: [meshes/*]\noutput: out\ntolerance: 2%\nthreads: 2\n";
+  const auto r = run_command("batch " + (dir / "job.yaml").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("broken.off"), std::string::npos) << "the error names the file";
+  const auto batch = nlohmann::json::parse(testing::read_text(dir / "out/batch.json"));
+  ASSERT_EQ(batch.at("models").get<int>(), 3);
+  EXPECT_EQ(batch.at("failed").get<int>(), 1);
+  for (const auto& row : batch.at("results")) {
+    const std::string name = row.at("name");
+    if (name == "broken") {
+      EXPECT_EQ(row.at("status"), "error");
+      EXPECT_FALSE(std::filesystem::exists(dir / "out/broken"));
+    } else {
+      EXPECT_EQ(row.at("status"), "ok") << row.dump();
+      EXPECT_TRUE(std::filesystem::exists(dir / "out" / name / "report.json"));
+      EXPECT_TRUE(std::filesystem::exists(dir / "out" / name / "pattern.pdf"));
+    }
+  }
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir / "out")) {
+    EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+        << "temporary file left behind: " << entry.path();
+  }
+}
+
+TEST(Cli, BatchShardsSplitTheInputs) {
+  const auto dir = testing::fresh_temp_dir("shard");
+  for (const char* name : {"a", "b", "c"}) {
+    ASSERT_EQ(run_command("generate open_cylinder " + (dir / (std::string(name) + ".obj")).string())
+                  .exit_code,
+              0);
+  }
+  std::ofstream(dir / "job.yaml") << "inputs: ['*.obj']\noutput: out\nshard: 2/2\n";
+  const auto r = run_command("batch " + (dir / "job.yaml").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  const auto batch = nlohmann::json::parse(testing::read_text(dir / "out/batch.json"));
+  ASSERT_EQ(batch.at("models").get<int>(), 1);
+  EXPECT_EQ(batch.at("results")[0].at("name"), "b");
+}
+
+TEST(Cli, BadJobFileAndBadToleranceExit2) {
+  const auto dir = testing::fresh_temp_dir("badjob");
+  std::ofstream(dir / "job.yaml") << "inputs: [none/*.obj]\noutptu: x\n";
+  const auto r = run_command("batch " + (dir / "job.yaml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("job.yaml:2:1: unknown key 'outptu'"), std::string::npos) << r.output;
+  const auto t = run_command("run x.obj --tolerance -3%");
+  EXPECT_EQ(t.exit_code, 2);
+  EXPECT_NE(t.output.find("tolerance"), std::string::npos) << t.output;
+}
+
+TEST(Cli, MissingFileIsAnErrorRow) {
+  const auto dir = testing::fresh_temp_dir("missing");
+  const auto r = run_command("run --out " + (dir / "out").string() + " " + (dir / "nope.obj").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("nope.obj"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace papercraft
