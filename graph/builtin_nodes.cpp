@@ -5,6 +5,8 @@ namespace papercraft {
 // Defined in nodes/<stage>/<impl>_node.cpp.
 void register_load_openmesh(Registry&);
 void register_segment_none(Registry&);
+void register_segment_feature(Registry&);
+void register_segment_fuzzy(Registry&);
 void register_select_nodes(Registry&);
 void register_ruled_twist_dp(Registry&);
 void register_hausdorff_bounded(Registry&);
@@ -18,6 +20,8 @@ void register_export_files(Registry&);
 void register_builtin_nodes(Registry& registry) {
   register_load_openmesh(registry);
   register_segment_none(registry);
+  register_segment_feature(registry);
+  register_segment_fuzzy(registry);
   register_select_nodes(registry);
   register_ruled_twist_dp(registry);
   register_hausdorff_bounded(registry);

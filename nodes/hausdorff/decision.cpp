@@ -9,6 +9,12 @@ StripVerdict judge_strip(
     const std::function<HausdorffResult(const TriangleMesh&, const TriangleMesh&, double)>&
         decide) {
   StripVerdict verdict;
+  if (hole_count > 0) {
+    // Holes are split off regardless of the error (paper 3.2.2): a strip between two
+    // boundaries cannot have holes, and measuring it would only locate the largest hole.
+    verdict.hole = 0;
+    return verdict;
+  }
   const TriangleMesh part_mesh = to_triangle_mesh(part);
   if (strip.mesh.empty() ||
       surface_area(strip.mesh) < kDegenerateStripArea * tolerance * tolerance) {
@@ -31,10 +37,6 @@ StripVerdict judge_strip(
     verdict.witness_error = result.witness.distance_lower_bound;
     verdict.witness_side = result.witness.side;
     verdict.witness_triangle = result.witness.triangle;
-    return verdict;
-  }
-  if (hole_count > 0) {
-    verdict.hole = 0;  // holes are split regardless of the error (paper 3.2.2)
     return verdict;
   }
   verdict.accept = true;
