@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <nlohmann/json.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -249,6 +250,8 @@ int main_impl(int argc, char** argv) {
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   }
   setup_logging(common);
+  omlog().disable();  // OpenMesh's chatter ("[OBJWriter] : write file"); errors come as ours
+  omout().disable();
 
   try {
     if (*run) {
