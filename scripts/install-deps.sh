@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages papercraft needs to build and test, if any is missing.
+set -euo pipefail
+packages=(build-essential cmake ninja-build pkg-config
+          libtbb-dev libopenmesh-dev libeigen3-dev libspdlog-dev libyaml-cpp-dev libcli11-dev
+          nlohmann-json3-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev
+          poppler-utils libxml2-utils)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}" >&2
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
