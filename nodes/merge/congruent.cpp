@@ -186,6 +186,16 @@ double mean_edge_length(const FlatStrip& strip) {
   return strip.triangles.empty() ? 0.0 : sum / (3.0 * strip.triangles.size());
 }
 
+bool consistently_oriented(const std::vector<Triangle>& triangles) {
+  std::set<std::pair<int, int>> directed;
+  for (const Triangle& t : triangles) {
+    for (int i = 0; i < 3; ++i) {
+      if (!directed.emplace(t[i], t[(i + 1) % 3]).second) return false;
+    }
+  }
+  return true;
+}
+
 // Y moved onto X along one of their chains and welded, or false when no chain gives a
 // congruent, overlap-free union.
 bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains,
@@ -260,6 +270,9 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
     }
     for (const Triangle& t : y.triangles)
       merged.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    // Welding must keep the strip a consistently oriented manifold: a directed edge used by
+    // two triangles means the chains were glued the wrong way round somewhere.
+    if (!consistently_oriented(merged.triangles)) continue;
     merged.boundary = flat_boundary(merged.triangles);
     return true;
   }
