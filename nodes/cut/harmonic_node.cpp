@@ -13,6 +13,7 @@
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/registry.h"
+#include "nodes/cut/maximal_strip.h"
 #include "nodes/cut/through_witness.h"
 
 namespace papercraft {
@@ -21,6 +22,7 @@ namespace {
 
 struct CutNodeOptions {
   WitnessCutOptions cut;
+  int search_steps = 4;
   int max_depth = 64;
   long min_faces = 1;
 };
@@ -42,12 +44,22 @@ std::vector<Mesh> cut_part(const RejectedStrip& rejected, const CutNodeOptions& 
   if (candidate.part.depth >= options.max_depth) {
     fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
   }
-  const WitnessCut cut =
+  WitnessCut cut;
+  if (rejected.hole < 0 && options.search_steps > 0) {
+    MaximalStripOptions search;
+    search.cut = options.cut;
+    search.steps = options.search_steps;
+    cut = cut_maximal_strip(part, candidate.first, candidate.first_closed, candidate.second,
+                            candidate.second_closed, model.tolerance.load(), search);
+  }
+  if (cut.pieces.empty()) {
+    cut =
       rejected.hole >= 0
           ? cut_through_hole(part, candidate.first, candidate.second,
                              candidate.holes[rejected.hole], options.cut)
           : cut_through_witness(part, candidate.first, candidate.second, rejected.witness,
                                 options.cut);
+  }
   spdlog::debug("cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {}",
                 candidate.part.path, part.n_faces(), candidate.holes.size(), rejected.hole,
                 rejected.witness_error, cut.across ? "g" : "f", cut.value, cut.pieces.size());
@@ -70,12 +82,16 @@ void register_cut_harmonic(Registry& registry) {
          "keep the iso-value at least this far from the strip boundaries (0 and 1)"},
         {"min_piece_fraction", ParamType::Number, "0.01",
          "a cut must leave every piece at least this fraction of the part's area"},
+        {"search_steps", ParamType::Integer, "4",
+         "bisection steps searching the cut that leaves the largest strip next to a "
+         "boundary (0: cut through the worst point, as the paper)"},
         {"max_depth", ParamType::Integer, "64",
          "nested cuts allowed below one segment before the model fails with a message"}},
        [](const Params& params) {
          CutNodeOptions options;
          options.cut.cut.snap_fraction = params.number("snap_fraction");
          options.max_depth = static_cast<int>(params.integer("max_depth"));
+         options.search_steps = static_cast<int>(params.integer("search_steps"));
          options.cut.harmonic.clamp_negative_weights = params.boolean("positive_weights");
          options.cut.margin = params.number("margin");
          options.cut.min_piece_fraction = params.number("min_piece_fraction");

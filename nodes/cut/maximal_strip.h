@@ -1,0 +1,34 @@
+#pragma once
+// Cutting a rejected part where the strip it leaves behind is as large as possible.
+//
+// The paper cuts through the worst point; the piece between a strip boundary and that cut
+// is often still far from its limit, so it needs another cut later and the model ends with
+// more strips than necessary. Here we search (bisection on the iso-value of the harmonic
+// field f between the two boundaries) for the largest piece next to either boundary that
+// one ruled strip approximates within the tolerance — a greedy sweep that yields maximal
+// strips. Each probe is one cut, one twist DP and one certified decision.
+
+#include <vector>
+
+#include "core/mesh.h"
+#include "nodes/cut/through_witness.h"
+#include "nodes/hausdorff/bounded.h"
+#include "nodes/ruled/twist_dp.h"
+
+namespace papercraft {
+
+struct MaximalStripOptions {
+  WitnessCutOptions cut;
+  TwistOptions twist;
+  BoundedHausdorffOptions hausdorff;
+  int steps = 4;  // bisection steps per side
+};
+
+/// Cuts `part` at the iso-value that leaves the largest piece next to `first` or `second`
+/// approximable by one strip within `tolerance`. Returns no pieces if no probe succeeded
+/// (the caller then cuts through the worst point). `first`/`second` as in harmonic_field.
+WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bool first_closed,
+                             const std::vector<int>& second, bool second_closed,
+                             double tolerance, const MaximalStripOptions& options = {});
+
+}  // namespace papercraft
