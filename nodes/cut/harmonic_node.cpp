@@ -23,6 +23,7 @@ namespace {
 struct CutNodeOptions {
   WitnessCutOptions cut;
   int search_steps = 4;
+  long search_max_faces = 4000;
   int max_depth = 64;
   long min_faces = 1;
 };
@@ -45,7 +46,8 @@ std::vector<Mesh> cut_part(const RejectedStrip& rejected, const CutNodeOptions& 
     fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
   }
   WitnessCut cut;
-  if (rejected.hole < 0 && options.search_steps > 0) {
+  if (rejected.hole < 0 && options.search_steps > 0 &&
+      static_cast<long>(part.n_faces()) <= options.search_max_faces) {
     MaximalStripOptions search;
     search.cut = options.cut;
     search.steps = options.search_steps;
@@ -85,6 +87,9 @@ void register_cut_harmonic(Registry& registry) {
         {"search_steps", ParamType::Integer, "4",
          "bisection steps searching the cut that leaves the largest strip next to a "
          "boundary (0: cut through the worst point, as the paper)"},
+        {"search_max_faces", ParamType::Integer, "4000",
+         "larger parts are cut through the worst point without the search (each probe "
+         "costs a cut, a strip and a certified decision)"},
         {"max_depth", ParamType::Integer, "64",
          "nested cuts allowed below one segment before the model fails with a message"}},
        [](const Params& params) {
@@ -92,6 +97,7 @@ void register_cut_harmonic(Registry& registry) {
          options.cut.cut.snap_fraction = params.number("snap_fraction");
          options.max_depth = static_cast<int>(params.integer("max_depth"));
          options.search_steps = static_cast<int>(params.integer("search_steps"));
+         options.search_max_faces = params.integer("search_max_faces");
          options.cut.harmonic.clamp_negative_weights = params.boolean("positive_weights");
          options.cut.margin = params.number("margin");
          options.cut.min_piece_fraction = params.number("min_piece_fraction");

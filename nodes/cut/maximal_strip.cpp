@@ -83,6 +83,8 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
   const double margin = options.cut.margin;
   const double area = surface_area(part);
   // The two sides are independent searches: run them side by side.
+  MaximalStripOptions probe_options = options;
+  probe_options.hausdorff.locate_maximum = false;  // a probe needs the decision only
   struct Side {
     WitnessCut cut;
     double area = 0.0;
@@ -98,7 +100,8 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       const double value = low_side ? d : 1.0 - d;
       std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut.cut);
       const Probe result =
-          pieces.size() < 2 ? Probe{} : probe(part, pieces, side, closed, tolerance, options);
+          pieces.size() < 2 ? Probe{}
+                             : probe(part, pieces, side, closed, tolerance, probe_options);
       const bool big_enough = result.ok && result.area >= options.cut.min_piece_fraction * area &&
                               area - result.area >= options.cut.min_piece_fraction * area;
       if (big_enough) {
