@@ -138,8 +138,18 @@ void register_export_files(Registry& registry) {
                }
              }
              if (wants(formats, "pdf")) {
+               StyleOptions pdf_style = style;
+               pdf_style.title = model.name;
+               if (strips.model && !strips.model->texture_path.empty()) {
+                 if (std::filesystem::path(strips.model->texture_path).extension() == ".png") {
+                   pdf_style.texture_path = strips.model->texture_path;
+                 } else {
+                   model.note("texture " + strips.model->texture_path +
+                              " not drawn: only PNG textures are supported");
+                 }
+               }
                write_via_temporary(dir / "pattern.pdf", [&](const std::filesystem::path& tmp) {
-                 write_pattern_pdf(layout, tmp, style);
+                 write_pattern_pdf(layout, tmp, pdf_style);
                });
              }
            }

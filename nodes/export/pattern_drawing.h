@@ -34,6 +34,8 @@ struct StyleOptions {
   StylePreset preset = StylePreset::Print;
   std::string font_family = "sans-serif";
   std::string title;  // printed in the footer when not empty (the model's name)
+  /// A PNG texture drawn onto pieces that carry uvs (PDF only); empty: none.
+  std::string texture_path;
 };
 
 /// A line style; widths and dashes in mm.

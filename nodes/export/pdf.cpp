@@ -3,6 +3,7 @@
 #include <cairo-pdf.h>
 #include <cairo.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -70,6 +71,43 @@ void draw_text(cairo_t* cr, const DrawText& text, const std::string& font) {
   cairo_restore(cr);
 }
 
+// Paints the texture onto every triangle of every piece that has uvs: each triangle gets
+// the affine map taking its uv corners (in texture pixels, v up) to its page corners.
+void draw_texture(cairo_t* cr, cairo_surface_t* texture, const Page& page) {
+  const double w = cairo_image_surface_get_width(texture);
+  const double h = cairo_image_surface_get_height(texture);
+  cairo_pattern_t* pattern = cairo_pattern_create_for_surface(texture);
+  cairo_pattern_set_extend(pattern, CAIRO_EXTEND_PAD);
+  for (const PlacedPiece& piece : page.pieces) {
+    if (piece.uvs.size() != piece.vertices.size()) continue;
+    for (const Triangle& t : piece.triangles) {
+      Eigen::Matrix3d from, to;
+      for (int k = 0; k < 3; ++k) {
+        const Vec2& uv = piece.uvs[t[k]];
+        from.col(k) << uv.x() * w, (1.0 - uv.y()) * h, 1.0;
+        to.col(k) << piece.vertices[t[k]].x(), piece.vertices[t[k]].y(), 1.0;
+      }
+      if (std::abs(from.determinant()) < 1e-12 || std::abs(to.determinant()) < 1e-12) continue;
+      const Eigen::Matrix3d page_to_texture = from * to.inverse();  // cairo: user -> pattern
+      cairo_matrix_t matrix;
+      cairo_matrix_init(&matrix, page_to_texture(0, 0), page_to_texture(1, 0),
+                        page_to_texture(0, 1), page_to_texture(1, 1), page_to_texture(0, 2),
+                        page_to_texture(1, 2));
+      cairo_pattern_set_matrix(pattern, &matrix);
+      cairo_save(cr);
+      cairo_move_to(cr, to(0, 0), to(1, 0));
+      cairo_line_to(cr, to(0, 1), to(1, 1));
+      cairo_line_to(cr, to(0, 2), to(1, 2));
+      cairo_close_path(cr);
+      cairo_clip(cr);
+      cairo_set_source(cr, pattern);
+      cairo_paint(cr);
+      cairo_restore(cr);
+    }
+  }
+  cairo_pattern_destroy(pattern);
+}
+
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
 };
@@ -97,7 +135,13 @@ void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path&
   {
     std::unique_ptr<cairo_t, ContextDeleter> cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
+    std::unique_ptr<cairo_surface_t, SurfaceDeleter> texture;
+    if (!style.texture_path.empty()) {
+      texture.reset(cairo_image_surface_create_from_png(style.texture_path.c_str()));
+      if (cairo_surface_status(texture.get()) != CAIRO_STATUS_SUCCESS) texture.reset();
+    }
     for (int page = 0; page < static_cast<int>(layout.pages.size()); ++page) {
+      if (texture) draw_texture(cr.get(), texture.get(), layout.pages[page]);
       for (const DrawLayer& layer : pattern_page_drawing(layout, page, style)) {
         for (const DrawPath& p : layer.paths) draw_path(cr.get(), p);
         for (const DrawText& t : layer.texts) draw_text(cr.get(), t, style.font_family);
