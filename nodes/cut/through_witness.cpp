@@ -31,11 +31,19 @@ std::vector<double> edge_distances(const Mesh& mesh, int source) {
   return distance;
 }
 
-// Accepts a cut if it splits the part into pieces none of which is a sliver.
-bool makes_progress(const std::vector<Mesh>& pieces, double area, double min_fraction) {
+// Accepts a cut if it splits the part into pieces none of which is a sliver, and if the
+// iso-line crosses the part rather than running along nearly every triangle (which is what
+// an iso-line does lengthwise through a band one triangle wide: the pieces would be the
+// same band, thinner, with more triangles, and the refinement would never end).
+bool makes_progress(const Mesh& part, const std::vector<Mesh>& pieces, double area,
+                    double min_fraction) {
   if (pieces.size() < 2) return false;
+  std::size_t faces = 0;
+  for (const Mesh& p : pieces) faces += p.n_faces();
+  if (faces > part.n_faces() + part.n_faces() / 2 + 16) return false;
   for (const Mesh& p : pieces) {
-    if (surface_area(p) < min_fraction * area) return false;
+    const double piece_area = surface_area(p);
+    if (piece_area < min_fraction * area || !(piece_area > 0.0)) return false;
   }
   return true;
 }
@@ -90,10 +98,15 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   }
   if (disjoint) attempts.push_back({&f, 0.5, false});
   if (g.size() > 0) attempts.push_back({&g, 0.5, true});
-  for (const Attempt& attempt : attempts) {
-    std::vector<Mesh> pieces = cut_along_isoline(part, *attempt.field, attempt.value, options.cut);
-    if (makes_progress(pieces, area, options.min_piece_fraction)) {
-      return {std::move(pieces), attempt.value, attempt.across};
+  // Slivers are refused first; on a small part where nothing else splits, any split is
+  // still progress.
+  for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
+    for (const Attempt& attempt : attempts) {
+      std::vector<Mesh> pieces =
+          cut_along_isoline(part, *attempt.field, attempt.value, options.cut);
+      if (makes_progress(part, pieces, area, min_fraction)) {
+        return {std::move(pieces), attempt.value, attempt.across};
+      }
     }
   }
   return {};
@@ -106,7 +119,7 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
   const Eigen::VectorXd f = harmonic_field(part, first, second, options.harmonic);
   const double value = hole_split_value(f, loop);
   std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut);
-  if (makes_progress(pieces, area, options.min_piece_fraction)) return {std::move(pieces), value};
+  if (makes_progress(part, pieces, area, options.min_piece_fraction)) return {std::move(pieces), value};
   // The hole lies where f hardly varies: cut across the part through the hole instead.
   Vec3 centre = Vec3::Zero();
   for (int v : loop) centre += to_eigen(part.point(part.vertex_handle(v)));

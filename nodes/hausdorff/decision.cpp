@@ -17,7 +17,7 @@ StripVerdict judge_strip(
   }
   const TriangleMesh part_mesh = to_triangle_mesh(part);
   if (strip.mesh.empty() ||
-      surface_area(strip.mesh) < kDegenerateStripArea * tolerance * tolerance) {
+      surface_area(strip.mesh) <= kDegenerateStripArea * surface_area(part_mesh)) {
     TriangleBvh bvh(strip.mesh.empty() ? TriangleMesh{{strip.mesh.vertices.front()}, {{0, 0, 0}}}
                                        : strip.mesh);
     for (const Vec3& p : part_mesh.vertices) {

@@ -22,9 +22,9 @@ struct StripVerdict {
   int hole = -1;  // on reject because the part has a hole (index into the holes list)
 };
 
-/// Strips with less area than this fraction of the squared tolerance are degenerate (a
-/// segment between two points): they are rejected with the part's farthest vertex as witness.
-inline constexpr double kDegenerateStripArea = 1e-6;
+/// Strips with less area than this fraction of their part's area are degenerate (a segment
+/// between two points): they are rejected with the part's farthest vertex as witness.
+inline constexpr double kDegenerateStripArea = 1e-9;
 
 /// Decides one strip. `decide(part, strip, tau)` is the implementation's decision.
 StripVerdict judge_strip(

@@ -196,6 +196,17 @@ bool consistently_oriented(const std::vector<Triangle>& triangles) {
   return true;
 }
 
+// Welding snaps y's seam vertices onto x's; a thin triangle next to the seam must not flip.
+bool counter_clockwise(const FlatStrip& strip) {
+  for (const Triangle& t : strip.triangles) {
+    const Vec2& a = strip.vertices2d[t[0]];
+    const Vec2 e1 = strip.vertices2d[t[1]] - a, e2 = strip.vertices2d[t[2]] - a;
+    const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()});
+    if (e1.x() * e2.y() - e1.y() * e2.x() < -1e-10 * longest) return false;
+  }
+  return true;
+}
+
 // Y moved onto X along one of their chains and welded, or false when no chain gives a
 // congruent, overlap-free union.
 bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains,
@@ -272,7 +283,7 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
       merged.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
     // Welding must keep the strip a consistently oriented manifold: a directed edge used by
     // two triangles means the chains were glued the wrong way round somewhere.
-    if (!consistently_oriented(merged.triangles)) continue;
+    if (!consistently_oriented(merged.triangles) || !counter_clockwise(merged)) continue;
     merged.boundary = flat_boundary(merged.triangles);
     return true;
   }
