@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <map>
 
 #include "core/generate.h"
@@ -75,6 +76,17 @@ TEST(Pattern, PawnAndFigureEightPatternsAreIsometricAndSeamed) {
       EXPECT_NE(svg.find(layer), std::string::npos) << layer;
     }
     EXPECT_EQ(testing::read_text(out.dir / "pattern.pdf").rfind("%PDF", 0), 0u);
+    // The PDF renders (poppler, as a print shop would) to exactly the pages the layout made.
+    const auto render = out.dir / "render";
+    ASSERT_EQ(std::system(("pdftoppm -r 8 -png '" + (out.dir / "pattern.pdf").string() + "' '" +
+                           render.string() + "'")
+                              .c_str()),
+              0);
+    int rendered = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out.dir)) {
+      rendered += entry.path().filename().string().rfind("render", 0) == 0 ? 1 : 0;
+    }
+    EXPECT_EQ(rendered, result.at("pages").get<int>());
   }
 }
 
