@@ -1,10 +1,11 @@
 #include "core/atomic_file.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <fstream>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 #include "core/errors.h"
 
@@ -15,9 +16,9 @@ namespace {
 std::filesystem::path temporary_name(const std::filesystem::path& path) {
   static std::atomic<unsigned long> counter{0};
   // Keeps the extension: some writers (OpenMesh) choose the format from it.
-  return path.parent_path() / ("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                               "-" + std::to_string(counter.fetch_add(1)) +
-                               path.extension().string());
+  return path.parent_path() /
+         ("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+          std::to_string(counter.fetch_add(1)) + path.extension().string());
 }
 
 }  // namespace
@@ -26,7 +27,8 @@ void write_via_temporary(const std::filesystem::path& path,
                          const std::function<void(const std::filesystem::path&)>& write) {
   std::error_code ec;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-  if (ec) throw IOException(path.parent_path().string() + ": cannot create folder: " + ec.message());
+  if (ec)
+    throw IOException(path.parent_path().string() + ": cannot create folder: " + ec.message());
   const std::filesystem::path temporary = temporary_name(path);
   try {
     write(temporary);

@@ -24,8 +24,12 @@ struct MeshTraits : public OpenMesh::DefaultTraits {
 
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 
-inline Vec3 to_eigen(const OpenMesh::Vec3d& p) { return Vec3(p[0], p[1], p[2]); }
-inline OpenMesh::Vec3d to_openmesh(const Vec3& p) { return OpenMesh::Vec3d(p[0], p[1], p[2]); }
+inline Vec3 to_eigen(const OpenMesh::Vec3d& p) {
+  return Vec3(p[0], p[1], p[2]);
+}
+inline OpenMesh::Vec3d to_openmesh(const Vec3& p) {
+  return OpenMesh::Vec3d(p[0], p[1], p[2]);
+}
 
 /// Copy of the geometry as an indexed triangle mesh (vertex i = OpenMesh vertex i).
 /// \pre mesh has no deleted elements (call garbage_collection() first).

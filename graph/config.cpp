@@ -59,10 +59,9 @@ class Parser {
       if (!it->first.IsScalar()) fail(it->first, "expected a key (a name) in " + what);
       const std::string key = it->first.Scalar();
       if (!seen.insert(key).second) fail(it->first, "duplicate key '" + key + "' in " + what);
-      if (!allowed.empty() &&
-          std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-        fail(it->first, "unknown key '" + key + "' in " + what + " (expected one of " +
-                            join(allowed) + ")");
+      if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+        fail(it->first,
+             "unknown key '" + key + "' in " + what + " (expected one of " + join(allowed) + ")");
       }
     }
     for (const auto& key : required) {
@@ -118,8 +117,8 @@ class Parser {
       node.impl = scalar(body["impl"], "an implementation name like hausdorff.bounded");
       const NodeSpec* spec = registry_.find(node.impl);
       if (!spec) {
-        fail(body["impl"], "unknown node implementation '" + node.impl + "' (known: " +
-                               join(registry_.names()) + ")");
+        fail(body["impl"], "unknown node implementation '" + node.impl +
+                               "' (known: " + join(registry_.names()) + ")");
       }
       node.params = parse_params(body["params"], *spec, node.name, body);
       if (body["concurrency"]) {
@@ -170,8 +169,8 @@ class Parser {
         }
         text += "]";
       } else {
-        fail(it->second, "expected a " + std::string(to_string(p->type)) + " for parameter '" +
-                             key + "'");
+        fail(it->second,
+             "expected a " + std::string(to_string(p->type)) + " for parameter '" + key + "'");
       }
       try {
         values[key] = parse_param_value(*p, text);
@@ -240,9 +239,8 @@ class Parser {
       const NodeSpec& spec = *registry_.find(config.nodes[i].impl);
       if (spec.input.name == "Job") {
         if (config.entry >= 0) {
-          fail(config.nodes[i].mark, "two nodes take Job (" +
-                                         config.nodes[config.entry].name + " and " +
-                                         config.nodes[i].name + "): expected one loader");
+          fail(config.nodes[i].mark, "two nodes take Job (" + config.nodes[config.entry].name +
+                                         " and " + config.nodes[i].name + "): expected one loader");
         }
         config.entry = static_cast<int>(i);
       } else if (fed[i] == 0) {

@@ -84,7 +84,7 @@ struct RejectedStrip {
   double witness_error = 0.0;
   int witness_side = 0;       // 0: on the part, 1: on the strip
   int witness_triangle = -1;  // triangle of that surface (-1: unknown)
-  int hole = -1;  // index into candidate->holes
+  int hole = -1;              // index into candidate->holes
 };
 
 /// The flat strips unfolded from one accepted 3D strip.

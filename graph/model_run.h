@@ -21,11 +21,11 @@ namespace papercraft {
 struct RunSettings {
   ToleranceSpec tolerance;
   std::filesystem::path output_dir = "out";
-  int threads = 0;                 // 0: all cores
-  std::string config_file;         // path or "<builtin>"
-  std::string config_text;         // the YAML actually used (copied into report.json)
-  double height_mm = 0.0;          // 0: use scale or the layout default
-  double scale = 0.0;              // mm per model unit; 0: unset
+  int threads = 0;          // 0: all cores
+  std::string config_file;  // path or "<builtin>"
+  std::string config_text;  // the YAML actually used (copied into report.json)
+  double height_mm = 0.0;   // 0: use scale or the layout default
+  double scale = 0.0;       // mm per model unit; 0: unset
 };
 
 struct NodeStatistics {

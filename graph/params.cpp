@@ -8,11 +8,16 @@ namespace papercraft {
 
 const char* to_string(ParamType type) {
   switch (type) {
-    case ParamType::Number: return "number";
-    case ParamType::Integer: return "integer";
-    case ParamType::Boolean: return "boolean";
-    case ParamType::String: return "string";
-    case ParamType::StringList: return "list of strings";
+    case ParamType::Number:
+      return "number";
+    case ParamType::Integer:
+      return "integer";
+    case ParamType::Boolean:
+      return "boolean";
+    case ParamType::String:
+      return "string";
+    case ParamType::StringList:
+      return "list of strings";
   }
   return "?";
 }
@@ -28,8 +33,12 @@ double Params::number(const std::string& name) const {
   if (const long* i = std::get_if<long>(&value)) return static_cast<double>(*i);
   return std::get<double>(value);
 }
-long Params::integer(const std::string& name) const { return std::get<long>(at(name)); }
-bool Params::boolean(const std::string& name) const { return std::get<bool>(at(name)); }
+long Params::integer(const std::string& name) const {
+  return std::get<long>(at(name));
+}
+bool Params::boolean(const std::string& name) const {
+  return std::get<bool>(at(name));
+}
 const std::string& Params::string(const std::string& name) const {
   return std::get<std::string>(at(name));
 }
@@ -97,7 +106,8 @@ ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
     case ParamType::StringList: {
       std::string inner = text;
       if (!inner.empty() && inner.front() == '[') {
-        if (inner.back() != ']') throw std::invalid_argument("expected a list [a, b], got '" + text + "'");
+        if (inner.back() != ']')
+          throw std::invalid_argument("expected a list [a, b], got '" + text + "'");
         inner = inner.substr(1, inner.size() - 2);
       }
       std::vector<std::string> items;

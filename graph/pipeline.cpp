@@ -81,10 +81,9 @@ class Execution {
   }
 
   std::vector<ModelResult> run() {
-    const int threads = options_.threads > 0 ? options_.threads
-                                             : tbb::info::default_concurrency();
-    max_in_flight_ = options_.max_models_in_flight > 0 ? options_.max_models_in_flight
-                                                       : 2 * threads;
+    const int threads = options_.threads > 0 ? options_.threads : tbb::info::default_concurrency();
+    max_in_flight_ =
+        options_.max_models_in_flight > 0 ? options_.max_models_in_flight : 2 * threads;
     tbb::task_arena arena(threads);
     std::thread ticker;
     if (options_.progress) ticker = std::thread([this] { progress_loop(); });
@@ -177,8 +176,8 @@ class Execution {
       }
       in_.model->in_flight.fetch_add(1);
       Envelope out{in_.model, std::move(payload)};
-      const bool taken = port == 0 ? std::get<0>(ports_).try_put(out)
-                                   : std::get<1>(ports_).try_put(out);
+      const bool taken =
+          port == 0 ? std::get<0>(ports_).try_put(out) : std::get<1>(ports_).try_put(out);
       if (!taken) in_.model->in_flight.fetch_sub(1);  // unconnected port: dropped
     }
 
@@ -255,8 +254,8 @@ class Execution {
   void start_next() {
     const std::size_t index = next_input_.fetch_add(1);
     if (index >= inputs_.size()) return;
-    auto model = std::make_shared<ModelRun>(static_cast<int>(index), inputs_[index],
-                                            names_[index], settings_, config_.nodes.size());
+    auto model = std::make_shared<ModelRun>(static_cast<int>(index), inputs_[index], names_[index],
+                                            settings_, config_.nodes.size());
     {
       std::lock_guard lock(active_mutex_);
       active_.insert(model.get());
@@ -291,14 +290,15 @@ class Execution {
 
   void progress_loop() {
     std::unique_lock lock(progress_mutex_);
-    while (!progress_cv_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_progress_; })) {
+    while (
+        !progress_cv_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_progress_; })) {
       long live = 0;
       {
         std::lock_guard active_lock(active_mutex_);
         for (const ModelRun* m : active_) live += m->in_flight.load();
       }
-      spdlog::info("progress: {}/{} models done, {} messages live", done_.load(),
-                   inputs_.size(), live);
+      spdlog::info("progress: {}/{} models done, {} messages live", done_.load(), inputs_.size(),
+                   live);
     }
   }
 

@@ -43,9 +43,9 @@ struct NodeTiming {
 };
 
 struct PipelineOptions {
-  int threads = 0;                // 0: all cores
-  int max_models_in_flight = 0;   // 0: 2 x threads
-  bool progress = false;          // a progress line on stderr about once a second
+  int threads = 0;               // 0: all cores
+  int max_models_in_flight = 0;  // 0: 2 x threads
+  bool progress = false;         // a progress line on stderr about once a second
   /// Called when a model finishes (from a worker thread; keep it short).
   std::function<void(const ModelRun&, const ModelResult&)> on_model_done;
 };

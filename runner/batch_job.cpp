@@ -66,8 +66,8 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
                           std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg);
   }
   if (!root.IsMap()) fail(path, root, "expected a map with 'inputs' and 'output'");
-  const std::vector<std::string> allowed = {"inputs",    "output",  "config",   "tolerance",
-                                            "threads",   "height_mm", "shard"};
+  const std::vector<std::string> allowed = {"inputs",  "output",    "config", "tolerance",
+                                            "threads", "height_mm", "shard"};
   std::set<std::string> seen;
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string key = it->first.Scalar();
@@ -121,8 +121,9 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
       if (used != text.size() || value < min) throw std::invalid_argument("");
       return value;
     } catch (const std::logic_error&) {
-      fail(path, node, std::string("expected a number >= ") + std::to_string(static_cast<int>(min)) +
-                           " for '" + key + "'");
+      fail(path, node,
+           std::string("expected a number >= ") + std::to_string(static_cast<int>(min)) + " for '" +
+               key + "'");
     }
   };
   if (root["threads"]) job.threads = static_cast<int>(number("threads", 0));

@@ -7,7 +7,8 @@
 //   tolerance: 2%                             # optional; overrides the config
 //   threads: 0                                # optional; 0 = all cores
 //   height_mm: 150                            # optional
-//   shard: 1/4                                # optional: this machine runs every 4th input from the 1st
+//   shard: 1/4                                # optional: this machine runs every 4th input from
+//   the 1st
 
 #include <filesystem>
 #include <optional>

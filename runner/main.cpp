@@ -1,15 +1,15 @@
 // papercraft — turns triangle meshes into paper patterns. See README.md for every command.
 
-#include <CLI/CLI.hpp>
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/System/omstream.hh>
-#include <nlohmann/json.hpp>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 #include <unistd.h>
 
+#include <CLI/CLI.hpp>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -39,7 +39,8 @@ void setup_logging(const CommonOptions& common) {
   logger->set_pattern("%^[%l]%$ %v");
   spdlog::set_default_logger(logger);
   spdlog::set_level(common.verbose ? spdlog::level::debug
-                                   : common.quiet ? spdlog::level::warn : spdlog::level::info);
+                    : common.quiet ? spdlog::level::warn
+                                   : spdlog::level::info);
 }
 
 std::string format_percent(double value) {
@@ -84,7 +85,7 @@ struct RunRequest {
   std::string config_file;  // empty: builtin default
   std::string tolerance;    // empty: from the config
   std::filesystem::path output = "out";
-  int threads = -1;         // -1: from the config
+  int threads = -1;  // -1: from the config
   double height_mm = 0.0;
   double scale = 0.0;
 };
@@ -159,7 +160,8 @@ void print_nodes(const Registry& registry) {
                 << p.default_value << "): " << p.description;
       if (!p.choices.empty()) {
         std::cout << " [";
-        for (std::size_t i = 0; i < p.choices.size(); ++i) std::cout << (i ? "|" : "") << p.choices[i];
+        for (std::size_t i = 0; i < p.choices.size(); ++i)
+          std::cout << (i ? "|" : "") << p.choices[i];
         std::cout << "]";
       }
       std::cout << "\n";
@@ -172,7 +174,8 @@ int generate(const std::string& shape, const std::filesystem::path& out,
   std::map<std::string, double> parameters;
   for (const auto& a : assignments) {
     const auto eq = a.find('=');
-    if (eq == std::string::npos) throw InvalidInputException("--param expects NAME=VALUE, got '" + a + "'");
+    if (eq == std::string::npos)
+      throw InvalidInputException("--param expects NAME=VALUE, got '" + a + "'");
     std::size_t used = 0;
     double value = 0;
     try {
@@ -290,8 +293,8 @@ int main_impl(int argc, char** argv) {
         for (const auto& name : shape_names()) {
           std::cout << name << "\n";
           for (const auto& p : shape_parameters(name)) {
-            std::cout << "    " << p.name << " (default " << p.default_value << "): " << p.description
-                      << "\n";
+            std::cout << "    " << p.name << " (default " << p.default_value
+                      << "): " << p.description << "\n";
           }
         }
         return shape.empty() && !list_shapes ? kExitUsage : kExitOk;
@@ -318,4 +321,6 @@ int main_impl(int argc, char** argv) {
 }  // namespace
 }  // namespace papercraft
 
-int main(int argc, char** argv) { return papercraft::main_impl(argc, argv); }
+int main(int argc, char** argv) {
+  return papercraft::main_impl(argc, argv);
+}

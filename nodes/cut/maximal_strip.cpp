@@ -64,16 +64,16 @@ Probe probe(const Mesh& part, const std::vector<Mesh>& pieces, const std::vector
                                ? twist_minimizing_strip(side_polyline, cut_polyline, options.twist)
                                : twist_minimizing_strip(cut_polyline, side_polyline, options.twist);
   if (strip.mesh.empty()) return {};
-  const HausdorffResult result =
-      certified_hausdorff_within(to_triangle_mesh(*piece), strip.mesh, tolerance, options.hausdorff);
+  const HausdorffResult result = certified_hausdorff_within(to_triangle_mesh(*piece), strip.mesh,
+                                                            tolerance, options.hausdorff);
   return {result.within, surface_area(*piece)};
 }
 
 }  // namespace
 
 WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bool first_closed,
-                             const std::vector<int>& second, bool second_closed,
-                             double tolerance, const MaximalStripOptions& options) {
+                             const std::vector<int>& second, bool second_closed, double tolerance,
+                             const MaximalStripOptions& options) {
   std::vector<char> in_first(part.n_vertices(), 0);
   for (int v : first) in_first[v] = 1;
   if (std::any_of(second.begin(), second.end(), [&](int v) { return in_first[v] != 0; })) {
@@ -100,8 +100,7 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       const double value = low_side ? d : 1.0 - d;
       std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut.cut);
       const Probe result =
-          pieces.size() < 2 ? Probe{}
-                             : probe(part, pieces, side, closed, tolerance, probe_options);
+          pieces.size() < 2 ? Probe{} : probe(part, pieces, side, closed, tolerance, probe_options);
       const bool big_enough = result.ok && result.area >= options.cut.min_piece_fraction * area &&
                               area - result.area >= options.cut.min_piece_fraction * area;
       if (big_enough) {

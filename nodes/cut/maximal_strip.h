@@ -28,7 +28,7 @@ struct MaximalStripOptions {
 /// approximable by one strip within `tolerance`. Returns no pieces if no probe succeeded
 /// (the caller then cuts through the worst point). `first`/`second` as in harmonic_field.
 WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bool first_closed,
-                             const std::vector<int>& second, bool second_closed,
-                             double tolerance, const MaximalStripOptions& options = {});
+                             const std::vector<int>& second, bool second_closed, double tolerance,
+                             const MaximalStripOptions& options = {});
 
 }  // namespace papercraft

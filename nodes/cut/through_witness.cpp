@@ -119,7 +119,8 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
   const Eigen::VectorXd f = harmonic_field(part, first, second, options.harmonic);
   const double value = hole_split_value(f, loop);
   std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut);
-  if (makes_progress(part, pieces, area, options.min_piece_fraction)) return {std::move(pieces), value};
+  if (makes_progress(part, pieces, area, options.min_piece_fraction))
+    return {std::move(pieces), value};
   // The hole lies where f hardly varies: cut across the part through the hole instead.
   Vec3 centre = Vec3::Zero();
   for (int v : loop) centre += to_eigen(part.point(part.vertex_handle(v)));

@@ -1,9 +1,8 @@
 #include "nodes/export/files.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/bvh.h"
@@ -20,9 +19,12 @@ void append_number(std::string& out, double value) {
 
 const char* kind_name(EdgeKind kind) {
   switch (kind) {
-    case EdgeKind::Cut: return "cut";
-    case EdgeKind::Seam: return "seam";
-    case EdgeKind::Open: return "open";
+    case EdgeKind::Cut:
+      return "cut";
+    case EdgeKind::Seam:
+      return "seam";
+    case EdgeKind::Open:
+      return "open";
   }
   return "cut";
 }

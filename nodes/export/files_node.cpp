@@ -4,10 +4,9 @@
 //
 //   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply], preset: print}}
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
 #include "graph/messages.h"
@@ -27,7 +26,9 @@ bool wants(const std::vector<std::string>& formats, const std::string& format) {
   return std::find(formats.begin(), formats.end(), format) != formats.end();
 }
 
-nlohmann::json vec3_json(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+nlohmann::json vec3_json(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
 
 }  // namespace
 
@@ -80,19 +81,26 @@ nlohmann::json model_report(const ModelRun& model, const ModelStrips* strips) {
   }
   report["timing"] = {{"total_seconds", model.seconds()}, {"nodes", nodes}};
   report["threads"] = model.settings->threads;
-  report["config"] = {{"file", model.settings->config_file},
-                      {"text", model.settings->config_text}};
+  report["config"] = {{"file", model.settings->config_file}, {"text", model.settings->config_text}};
   report["notes"] = model.notes();
   return report;
 }
 
 void register_export_files(Registry& registry) {
   registry.add(
-      {"export.files", "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
-       MessageType::of<Pattern>(), false, {},
-       {{"formats", ParamType::StringList, "[pdf, svg, obj, json, ply]",
-         "which files to write besides report.json", {"pdf", "svg", "obj", "json", "ply"}},
-        {"preset", ParamType::String, "print",
+      {"export.files",
+       "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
+       MessageType::of<Pattern>(),
+       false,
+       {},
+       {{"formats",
+         ParamType::StringList,
+         "[pdf, svg, obj, json, ply]",
+         "which files to write besides report.json",
+         {"pdf", "svg", "obj", "json", "ply"}},
+        {"preset",
+         ParamType::String,
+         "print",
          "colours and line styles: print, laser (cut red, score blue) or cutter",
          {"print", "laser", "cutter"}}},
        [](const Params& params) {
@@ -109,7 +117,8 @@ void register_export_files(Registry& registry) {
              for (const auto& s : strips.strips3d) strips3d.push_back(s->strip.get());
              write_file_atomic(dir / "approximation.obj", approximation_obj(strips3d));
            }
-           if (wants(formats, "json")) write_file_atomic(dir / "strips.json", strips_json(strips.flat));
+           if (wants(formats, "json"))
+             write_file_atomic(dir / "strips.json", strips_json(strips.flat));
            if (wants(formats, "ply") && strips.model) {
              TriangleMesh all;
              for (const auto& s : strips.strips3d) {

@@ -11,8 +11,11 @@ namespace papercraft {
 
 void register_hausdorff_bounded(Registry& registry) {
   registry.add(
-      {"hausdorff.bounded", "certified two-sided Hausdorff decision (BVH, bounds, subdivision)",
-       MessageType::of<StripCandidate>(), false, hausdorff_ports(),
+      {"hausdorff.bounded",
+       "certified two-sided Hausdorff decision (BVH, bounds, subdivision)",
+       MessageType::of<StripCandidate>(),
+       false,
+       hausdorff_ports(),
        {{"precision", ParamType::Number, "0.05",
          "on reject, locate the maximum error to within precision x tolerance"},
         {"max_evaluations", ParamType::Integer, "20000000",

@@ -19,7 +19,7 @@ struct StripVerdict {
   double witness_error = 0.0;
   int witness_side = 0;       // 0: the witness lies on the part, 1: on the strip
   int witness_triangle = -1;  // triangle of that surface containing the witness
-  int hole = -1;  // on reject because the part has a hole (index into the holes list)
+  int hole = -1;              // on reject because the part has a hole (index into the holes list)
 };
 
 /// Strips with less area than this fraction of their part's area are degenerate (a segment

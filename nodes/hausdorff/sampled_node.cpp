@@ -11,8 +11,11 @@ namespace papercraft {
 
 void register_hausdorff_sampled(Registry& registry) {
   registry.add(
-      {"hausdorff.sampled", "sampled (Metro-like) Hausdorff decision; NOT certified",
-       MessageType::of<StripCandidate>(), false, hausdorff_ports(),
+      {"hausdorff.sampled",
+       "sampled (Metro-like) Hausdorff decision; NOT certified",
+       MessageType::of<StripCandidate>(),
+       false,
+       hausdorff_ports(),
        {{"face_samples", ParamType::Integer, "100000", "samples spread over each surface"}},
        [](const Params& params) {
          SampledHausdorffOptions options;

@@ -13,8 +13,11 @@ namespace papercraft {
 
 void register_layout_pages(Registry& registry) {
   registry.add(
-      {"layout.pages", "real-world scale, tightest rotation, MaxRects packing onto pages",
-       MessageType::of<ModelStrips>(), false, {{"out", MessageType::of<Pattern>()}},
+      {"layout.pages",
+       "real-world scale, tightest rotation, MaxRects packing onto pages",
+       MessageType::of<ModelStrips>(),
+       false,
+       {{"out", MessageType::of<Pattern>()}},
        {{"page", ParamType::String, "A4", "A4, A3, Letter or WIDTHxHEIGHT in mm (e.g. 300x450)"},
         {"margin_mm", ParamType::Number, "10", "blank border on every side of a page"},
         {"height_mm", ParamType::Number, "200",

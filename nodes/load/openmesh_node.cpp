@@ -34,8 +34,11 @@ MeshSummary summarize(const Mesh& mesh, bool has_uvs) {
 
 void register_load_openmesh(Registry& registry) {
   registry.add(
-      {"load.openmesh", "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
-       MessageType::of<Job>(), false, {{"out", MessageType::of<Model>()}},
+      {"load.openmesh",
+       "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
+       MessageType::of<Job>(),
+       false,
+       {{"out", MessageType::of<Model>()}},
        {{"repair", ParamType::Boolean, "true",
          "remove unreferenced vertices and merge exactly duplicate vertices (logged)"},
         {"max_faces", ParamType::Integer, "50000000", "refuse larger meshes"}},

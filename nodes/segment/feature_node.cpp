@@ -12,8 +12,11 @@ namespace papercraft {
 
 void register_segment_feature(Registry& registry) {
   registry.add(
-      {"segment.feature", "parts separated by sharp edges (dihedral angle above a threshold)",
-       MessageType::of<Model>(), false, {{"out", MessageType::of<Part>()}},
+      {"segment.feature",
+       "parts separated by sharp edges (dihedral angle above a threshold)",
+       MessageType::of<Model>(),
+       false,
+       {{"out", MessageType::of<Part>()}},
        {{"angle_degrees", ParamType::Number, "40", "edges bent more than this separate parts"},
         {"min_area_fraction", ParamType::Number, "0.01",
          "regions smaller than this fraction of the area join a neighbour"},

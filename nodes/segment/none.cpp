@@ -7,8 +7,8 @@
 namespace papercraft {
 
 void tag_input_vertices(Mesh& mesh) {
-  auto input_vertex = OpenMesh::getOrMakeProperty<OpenMesh::VertexHandle, int>(
-      mesh, kInputVertexProperty);
+  auto input_vertex =
+      OpenMesh::getOrMakeProperty<OpenMesh::VertexHandle, int>(mesh, kInputVertexProperty);
   for (auto v : mesh.vertices()) input_vertex[v] = v.idx();
 }
 

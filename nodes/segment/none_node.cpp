@@ -9,8 +9,12 @@
 namespace papercraft {
 
 void register_segment_none(Registry& registry) {
-  registry.add({"segment.none", "no segmentation: one part per connected component",
-                MessageType::of<Model>(), false, {{"out", MessageType::of<Part>()}}, {},
+  registry.add({"segment.none",
+                "no segmentation: one part per connected component",
+                MessageType::of<Model>(),
+                false,
+                {{"out", MessageType::of<Part>()}},
+                {},
                 [](const Params&) {
                   return make_body([](const Envelope& in, Emitter& out) {
                     emit_parts(in, out, segment_none(*in.get<Model>().mesh));

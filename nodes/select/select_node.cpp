@@ -42,8 +42,11 @@ Candidate make_candidate(const Part& part, const BoundarySelection& selection) {
 }  // namespace
 
 void register_select_nodes(Registry& registry) {
-  registry.add({"select.geodesic", "strip boundaries farthest apart (Dijkstra sweeps)",
-                MessageType::of<Part>(), false, {{"out", MessageType::of<Candidate>()}},
+  registry.add({"select.geodesic",
+                "strip boundaries farthest apart (Dijkstra sweeps)",
+                MessageType::of<Part>(),
+                false,
+                {{"out", MessageType::of<Candidate>()}},
                 {{"sweeps", ParamType::Integer, "4",
                   "farthest-point sweeps for the two far vertices of a closed part"}},
                 [](const Params& params) {
@@ -57,7 +60,9 @@ void register_select_nodes(Registry& registry) {
   registry.add(
       {"select.exhaustive",
        "every boundary pair built and measured in parallel; the lowest certified error wins",
-       MessageType::of<Part>(), false, {{"out", MessageType::of<Candidate>()}},
+       MessageType::of<Part>(),
+       false,
+       {{"out", MessageType::of<Candidate>()}},
        {{"precision", ParamType::Number, "0.05",
          "error bound of each pair's Hausdorff value, as a fraction of the tolerance"}},
        [](const Params& params) {

@@ -89,8 +89,7 @@ nodes:
 )";
   const auto out = run_pipeline(mesh, "0.01%", "tiny", 0, config);
   EXPECT_FALSE(out.result.ok);
-  EXPECT_NE(out.result.error.find("cannot be approximated within the tolerance"),
-            std::string::npos)
+  EXPECT_NE(out.result.error.find("cannot be approximated within the tolerance"), std::string::npos)
       << out.result.error;
   EXPECT_FALSE(std::filesystem::exists(out.dir / "report.json"))
       << "a failed model leaves no half-written output";

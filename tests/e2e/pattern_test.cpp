@@ -13,8 +13,12 @@ namespace {
 
 using testing::run_pipeline;
 
-Vec3 v3(const nlohmann::json& j) { return Vec3(j[0], j[1], j[2]); }
-Vec2 v2(const nlohmann::json& j) { return Vec2(j[0], j[1]); }
+Vec3 v3(const nlohmann::json& j) {
+  return Vec3(j[0], j[1], j[2]);
+}
+Vec2 v2(const nlohmann::json& j) {
+  return Vec2(j[0], j[1]);
+}
 
 // Isometry and orientation of every flat triangle; every boundary edge a seam or open;
 // every seam label on exactly two edge chains' worth of sides with matching 3D lengths.
@@ -44,7 +48,8 @@ void expect_valid_pattern(const nlohmann::json& flat) {
       if (kind == "seam") {
         const std::string label = e.at("label");
         seam_edges_by_label[label]++;
-        seam_length_by_label[label] += (v3(p3[e.at("v0").get<int>()]) - v3(p3[e.at("v1").get<int>()])).norm();
+        seam_length_by_label[label] +=
+            (v3(p3[e.at("v0").get<int>()]) - v3(p3[e.at("v1").get<int>()])).norm();
       }
     }
   }

@@ -34,7 +34,8 @@ TEST(Texture, UvsReachStripsAndTheTextureIsDrawnInThePdf) {
   obj.precision(17);
   obj << "mtllib tube.mtl\nusemtl skin\n";
   for (const Vec3& p : tube.vertices) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  for (const Vec3& p : tube.vertices) obj << "vt " << 0.5 * (p.x() + 1.0) << ' ' << 0.5 * p.z() << '\n';
+  for (const Vec3& p : tube.vertices)
+    obj << "vt " << 0.5 * (p.x() + 1.0) << ' ' << 0.5 * p.z() << '\n';
   for (const Triangle& t : tube.triangles) {
     obj << "f";
     for (int v : t) obj << ' ' << v + 1 << '/' << v + 1;

@@ -17,7 +17,8 @@ void expect_error(const std::string& yaml, int line, int column,
     FAIL() << "expected a ConfigException for:\n" << yaml;
   } catch (const ConfigException& e) {
     const std::string message = e.what();
-    const std::string where = "cfg.yaml:" + std::to_string(line) + ":" + std::to_string(column) + ": ";
+    const std::string where =
+        "cfg.yaml:" + std::to_string(line) + ":" + std::to_string(column) + ": ";
     EXPECT_EQ(message.rfind(where, 0), 0u) << message;
     for (const auto& w : words) EXPECT_NE(message.find(w), std::string::npos) << message;
   }
@@ -62,9 +63,8 @@ TEST(ConfigErrors, BadValues) {
 }
 
 TEST(ConfigErrors, TypeMismatchOnEdgeNamesBothEnds) {
-  expect_error(
-      "nodes:\n  source: {impl: test.source, to: [sink]}\n  sink: {impl: test.sink}\n", 2, 36,
-      {"type mismatch", "source", "emits Item", "sink (test.sink) takes Summary"});
+  expect_error("nodes:\n  source: {impl: test.source, to: [sink]}\n  sink: {impl: test.sink}\n", 2,
+               36, {"type mismatch", "source", "emits Item", "sink (test.sink) takes Summary"});
 }
 
 TEST(ConfigErrors, EdgeToUnknownNode) {

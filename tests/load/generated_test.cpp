@@ -1,9 +1,9 @@
 // The loader on generated meshes in every format it reads: counts and topology survive.
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <filesystem>
 
 #include "core/generate.h"

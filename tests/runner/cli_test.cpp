@@ -1,10 +1,10 @@
 // The papercraft command: subcommands, exit codes, batch behaviour with bad inputs.
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <array>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "support/pipeline_run.h"
 
@@ -23,7 +23,8 @@ CommandResult run_command(const std::string& arguments) {
   if (!pipe) return result;
   std::array<char, 4096> buffer{};
   std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    result.output.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -34,10 +35,10 @@ const std::string kSource = PAPERCRAFT_SOURCE_DIR;
 TEST(Cli, NodesListsEveryStage) {
   const auto r = run_command("nodes");
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  for (const char* name : {"load.openmesh", "segment.none", "select.geodesic", "select.exhaustive",
-                           "ruled.twist_dp", "hausdorff.bounded", "hausdorff.sampled",
-                           "cut.harmonic", "unfold.sequential", "merge.congruent", "layout.pages",
-                           "export.files"}) {
+  for (const char* name :
+       {"load.openmesh", "segment.none", "select.geodesic", "select.exhaustive", "ruled.twist_dp",
+        "hausdorff.bounded", "hausdorff.sampled", "cut.harmonic", "unfold.sequential",
+        "merge.congruent", "layout.pages", "export.files"}) {
     EXPECT_NE(r.output.find(name), std::string::npos) << name;
   }
   EXPECT_NE(r.output.find("param precision (number, default 0.05)"), std::string::npos) << r.output;
@@ -69,7 +70,8 @@ TEST(Cli, GenerateWritesMesh) {
   const auto bad = run_command("generate nosuchshape " + (dir / "x.obj").string());
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("sphere"), std::string::npos) << "lists the known shapes";
-  const auto param = run_command("generate sphere " + (dir / "s.obj").string() + " --param radius=-1");
+  const auto param =
+      run_command("generate sphere " + (dir / "s.obj").string() + " --param radius=-1");
   EXPECT_EQ(param.exit_code, 2) << param.output;
   EXPECT_FALSE(std::filesystem::exists(dir / "s.obj"));
 }
@@ -132,7 +134,8 @@ TEST(Cli, BadJobFileAndBadToleranceExit2) {
 
 TEST(Cli, MissingFileIsAnErrorRow) {
   const auto dir = testing::fresh_temp_dir("missing");
-  const auto r = run_command("run --out " + (dir / "out").string() + " " + (dir / "nope.obj").string());
+  const auto r =
+      run_command("run --out " + (dir / "out").string() + " " + (dir / "nope.obj").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("nope.obj"), std::string::npos) << r.output;
 }

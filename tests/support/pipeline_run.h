@@ -2,17 +2,17 @@
 // Runs the real pipeline in-process on generated meshes and reads its output files back,
 // for end-to-end tests.
 
-#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
+#include <unistd.h>
 
+#include <OpenMesh/Core/IO/MeshIO.hh>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "core/mesh.h"
 #include "graph/config.h"
@@ -78,7 +78,8 @@ inline TriangleMesh concatenate(const std::vector<TriangleMesh>& parts) {
   for (const auto& p : parts) {
     const int base = static_cast<int>(all.vertices.size());
     all.vertices.insert(all.vertices.end(), p.vertices.begin(), p.vertices.end());
-    for (const Triangle& t : p.triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    for (const Triangle& t : p.triangles)
+      all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
   }
   return all;
 }

@@ -25,7 +25,10 @@ inline std::atomic<int> sink_calls{0};
 
 inline Registry test_registry() {
   Registry r;
-  r.add({"test.source", "emits `count` items 1..count", MessageType::of<Job>(), false,
+  r.add({"test.source",
+         "emits `count` items 1..count",
+         MessageType::of<Job>(),
+         false,
          {{"out", MessageType::of<Item>()}},
          {{"count", ParamType::Integer, "3", "items per model"},
           {"fail_every", ParamType::Integer, "0", "throw for model index % fail_every == 1"}},
@@ -39,7 +42,10 @@ inline Registry test_registry() {
              for (int i = 1; i <= count; ++i) out.emit(0, Item{i});
            });
          }});
-  r.add({"test.double", "doubles the value", MessageType::of<Item>(), false,
+  r.add({"test.double",
+         "doubles the value",
+         MessageType::of<Item>(),
+         false,
          {{"out", MessageType::of<Item>()}},
          {},
          [](const Params&) {
@@ -47,8 +53,11 @@ inline Registry test_registry() {
              out.emit(0, Item{2 * in.get<Item>().value});
            });
          }});
-  r.add({"test.loop", "splits an item in two until it reaches `limit`", MessageType::of<Item>(),
-         false, {{"done", MessageType::of<Item>()}, {"again", MessageType::of<Item>()}},
+  r.add({"test.loop",
+         "splits an item in two until it reaches `limit`",
+         MessageType::of<Item>(),
+         false,
+         {{"done", MessageType::of<Item>()}, {"again", MessageType::of<Item>()}},
          {{"limit", ParamType::Integer, "16", "values >= limit leave the loop"}},
          [](const Params& p) {
            const long limit = p.integer("limit");
@@ -62,8 +71,11 @@ inline Registry test_registry() {
              }
            });
          }});
-  r.add({"test.even", "routes even values to 'even', odd to 'odd'", MessageType::of<Item>(),
-         false, {{"even", MessageType::of<Item>()}, {"odd", MessageType::of<Item>()}},
+  r.add({"test.even",
+         "routes even values to 'even', odd to 'odd'",
+         MessageType::of<Item>(),
+         false,
+         {{"even", MessageType::of<Item>()}, {"odd", MessageType::of<Item>()}},
          {},
          [](const Params&) {
            return make_body([](const Envelope& in, Emitter& out) {
@@ -71,7 +83,10 @@ inline Registry test_registry() {
              out.emit(v % 2 == 0 ? 0 : 1, Item{v});
            });
          }});
-  r.add({"test.collect", "sums all items of a model", MessageType::of<Item>(), true,
+  r.add({"test.collect",
+         "sums all items of a model",
+         MessageType::of<Item>(),
+         true,
          {{"out", MessageType::of<Summary>()}},
          {},
          [](const Params&) {
@@ -84,8 +99,11 @@ inline Registry test_registry() {
              out.emit(0, s);
            });
          }});
-  r.add({"test.sink", "records the summary in the model's results", MessageType::of<Summary>(),
-         false, {},
+  r.add({"test.sink",
+         "records the summary in the model's results",
+         MessageType::of<Summary>(),
+         false,
+         {},
          {},
          [](const Params&) {
            return make_body([](const Envelope& in, Emitter&) {
@@ -95,8 +113,11 @@ inline Registry test_registry() {
              in.model->set_result("sum", static_cast<double>(in.get<Summary>().sum));
            });
          }});
-  r.add({"test.item_sink", "adds item values to the model's results", MessageType::of<Item>(),
-         false, {},
+  r.add({"test.item_sink",
+         "adds item values to the model's results",
+         MessageType::of<Item>(),
+         false,
+         {},
          {},
          [](const Params&) {
            return make_body([](const Envelope& in, Emitter&) {
