@@ -2,34 +2,12 @@
 
 #include <algorithm>
 #include <limits>
-#include <queue>
+
+#include "nodes/select/geodesic.h"
 
 namespace papercraft {
 
 namespace {
-
-std::vector<double> edge_distances(const Mesh& mesh, int source) {
-  std::vector<double> distance(mesh.n_vertices(), std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  distance[source] = 0.0;
-  queue.push({0.0, source});
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[v]) continue;
-    const auto vh = mesh.vertex_handle(v);
-    for (auto h : mesh.voh_range(vh)) {
-      const int w = h.to().idx();
-      const double nd = d + mesh.calc_edge_length(h);
-      if (nd < distance[w]) {
-        distance[w] = nd;
-        queue.push({nd, w});
-      }
-    }
-  }
-  return distance;
-}
 
 // Accepts a cut if it splits the part into pieces none of which is a sliver, and if the
 // iso-line crosses the part rather than running along nearly every triangle (which is what
@@ -55,7 +33,7 @@ std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps) {
   std::pair<int, int> best{0, 0};
   double best_distance = -1.0;
   for (int sweep = 0; sweep < sweeps; ++sweep) {
-    const auto distance = edge_distances(part, current);
+    const auto distance = edge_graph_distances(part, {current});
     int far = current;
     for (std::size_t v = 0; v < distance.size(); ++v) {
       if (std::isfinite(distance[v]) && distance[v] > distance[far]) far = static_cast<int>(v);
