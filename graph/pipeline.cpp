@@ -297,8 +297,8 @@ class Execution {
         std::lock_guard active_lock(active_mutex_);
         for (const ModelRun* m : active_) live += m->in_flight.load();
       }
-      spdlog::info("progress: {}/{} models done, {} messages live", done_.load(), inputs_.size(),
-                   live);
+      spdlog::info("progress: {}/{} models done, {} parts and strips in flight", done_.load(),
+                   inputs_.size(), live);
     }
   }
 
