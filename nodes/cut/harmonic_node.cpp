@@ -25,7 +25,6 @@ struct CutNodeOptions {
   int search_steps = 4;
   long search_max_faces = 4000;
   int max_depth = 64;
-  long min_faces = 1;
 };
 
 std::vector<Mesh> cut_part(const RejectedStrip& rejected, const CutNodeOptions& options,
