@@ -65,6 +65,18 @@ std::vector<std::vector<int>> boundary_loops(const Mesh& mesh) {
   return sorted;
 }
 
+void require_no_deleted_elements(const Mesh& mesh, const char* function) {
+  auto deleted = [&](auto range) {
+    for (auto h : range)
+      if (mesh.status(h).deleted()) return true;
+    return false;
+  };
+  if (deleted(mesh.all_vertices()) || deleted(mesh.all_edges()) || deleted(mesh.all_faces())) {
+    throw InvalidInputException(std::string(function) +
+                                ": mesh has deleted elements; call garbage_collection() first");
+  }
+}
+
 int euler_characteristic(const Mesh& mesh) {
   return static_cast<int>(mesh.n_vertices()) - static_cast<int>(mesh.n_edges()) +
          static_cast<int>(mesh.n_faces());

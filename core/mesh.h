@@ -2,8 +2,6 @@
 // The mesh type of the pipeline: OpenMesh, double precision, with per-vertex texture
 // coordinates and status bits (for deletion/garbage collection during cuts).
 //
-// Named properties used across stages (OpenMesh `makePersistent...` / property names):
-//   "v:input_vertex" (int)  index of the input vertex this vertex is, or -1 if created by a cut.
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <vector>
@@ -23,6 +21,14 @@ struct MeshTraits : public OpenMesh::DefaultTraits {
 };
 
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
+
+/// Name of the int vertex property mapping a vertex to the input vertex it is (its index in
+/// the loaded file), or -1 where a cut created it. Set by the loader, carried by every stage.
+inline constexpr const char* kInputVertexProperty = "v:input_vertex";
+
+/// Throws InvalidInputException naming `function` if `mesh` has deleted elements (the
+/// algorithms index vertices and faces densely; call garbage_collection() first).
+void require_no_deleted_elements(const Mesh& mesh, const char* function);
 
 inline Vec3 to_eigen(const OpenMesh::Vec3d& p) {
   return Vec3(p[0], p[1], p[2]);

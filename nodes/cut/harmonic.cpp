@@ -19,8 +19,6 @@
 namespace papercraft {
 namespace {
 
-constexpr const char* kInputVertexProperty = "v:input_vertex";
-
 class UnionFind {
  public:
   explicit UnionFind(std::size_t n) : parent_(n) {
@@ -44,18 +42,6 @@ class UnionFind {
  private:
   std::vector<std::size_t> parent_;
 };
-
-void require_no_deleted_elements(const Mesh& mesh, const char* function) {
-  auto deleted = [&](auto range) {
-    for (auto h : range)
-      if (mesh.status(h).deleted()) return true;
-    return false;
-  };
-  if (deleted(mesh.all_vertices()) || deleted(mesh.all_edges()) || deleted(mesh.all_faces())) {
-    throw InvalidInputException(std::string(function) +
-                                ": mesh has deleted elements; call garbage_collection() first");
-  }
-}
 
 std::optional<OpenMesh::VPropHandleT<int>> input_vertex_handle(const Mesh& mesh) {
   OpenMesh::VPropHandleT<int> handle;

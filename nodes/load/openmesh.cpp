@@ -1876,7 +1876,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
     }
   }
   auto input_vertex =
-      OpenMesh::getOrMakeProperty<OpenMesh::VertexHandle, int>(mesh, "v:input_vertex");
+      OpenMesh::getOrMakeProperty<OpenMesh::VertexHandle, int>(mesh, kInputVertexProperty);
   for (auto v : mesh.vertices()) input_vertex[v] = soup.source_vertex[v.idx()];
 
   if (with_uvs) {

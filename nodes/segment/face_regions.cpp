@@ -71,15 +71,7 @@ void require_segmentable(const Mesh& mesh, const char* function) {
   if (mesh.n_faces() == 0) {
     throw InvalidInputException(std::string(function) + ": the mesh has no faces");
   }
-  auto deleted = [&](auto range) {
-    for (auto h : range)
-      if (mesh.status(h).deleted()) return true;
-    return false;
-  };
-  if (deleted(mesh.all_vertices()) || deleted(mesh.all_edges()) || deleted(mesh.all_faces())) {
-    throw InvalidInputException(std::string(function) +
-                                ": mesh has deleted elements; call garbage_collection() first");
-  }
+  require_no_deleted_elements(mesh, function);
 }
 
 FaceGraph face_graph(const Mesh& mesh) {

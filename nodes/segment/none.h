@@ -6,10 +6,6 @@
 
 namespace papercraft {
 
-/// Name of the int vertex property mapping a part's vertex to its input vertex (-1: made
-/// by a cut).
-inline constexpr const char* kInputVertexProperty = "v:input_vertex";
-
 /// Gives every vertex of `mesh` the property kInputVertexProperty = its own index.
 void tag_input_vertices(Mesh& mesh);
 
