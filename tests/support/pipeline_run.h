@@ -3,10 +3,8 @@
 // for end-to-end tests.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
-#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -18,18 +16,9 @@
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
+#include "support/temp_dir.h"
 
 namespace papercraft::testing {
-
-inline std::filesystem::path fresh_temp_dir(const std::string& name) {
-  static std::atomic<int> counter{0};
-  auto dir = std::filesystem::temp_directory_path() /
-             ("papercraft-test-" + std::to_string(::getpid()) + "-" + name + "-" +
-              std::to_string(counter.fetch_add(1)));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
