@@ -1,5 +1,6 @@
 #include "graph/tolerance.h"
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -35,6 +36,32 @@ ToleranceSpec parse_tolerance(const std::string& raw) {
   }
   spec.value = spec.relative ? value / 100.0 : value;
   return spec;
+}
+
+double parse_length_mm(const std::string& raw) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(raw, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string unit;
+  for (std::size_t i = used; i < raw.size(); ++i) {
+    if (!std::isspace(static_cast<unsigned char>(raw[i]))) {
+      unit += static_cast<char>(std::tolower(static_cast<unsigned char>(raw[i])));
+    }
+  }
+  double mm_per_unit = 0.0;
+  if (unit.empty() || unit == "mm") mm_per_unit = 1.0;
+  if (unit == "cm") mm_per_unit = 10.0;
+  if (unit == "m") mm_per_unit = 1000.0;
+  if (unit == "in" || unit == "\"") mm_per_unit = 25.4;
+  if (used == 0 || mm_per_unit == 0.0 || !std::isfinite(value) || value <= 0.0) {
+    throw std::invalid_argument("expected a positive length like 200, 200mm, 20cm or 8in, got '" +
+                                raw + "'");
+  }
+  return value * mm_per_unit;
 }
 
 }  // namespace papercraft

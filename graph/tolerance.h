@@ -1,5 +1,6 @@
 #pragma once
-// The user tolerance: relative ("2%" of the largest bounding-box side) or absolute (0.004).
+// The user tolerance: relative ("2%" of the largest bounding-box side) or absolute (0.004);
+// and paper lengths with units.
 
 #include <string>
 
@@ -16,5 +17,9 @@ struct ToleranceSpec {
 /// "2%" -> {0.02, relative}; "0.004" -> {0.004, absolute}. Throws std::invalid_argument
 /// ("expected a tolerance like 2% or 0.004") on anything else or a value <= 0.
 ToleranceSpec parse_tolerance(const std::string& text);
+
+/// A length on paper in millimetres: "200", "200mm", "20 cm", "0.2m", "8in" (a bare number is
+/// mm). Throws std::invalid_argument naming the text on anything else or a value <= 0.
+double parse_length_mm(const std::string& text);
 
 }  // namespace papercraft

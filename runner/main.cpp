@@ -218,9 +218,10 @@ int main_impl(int argc, char** argv) {
   run->add_option("-o,--out", run_request.output, "output folder (default: out)");
   run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
       ->check(CLI::NonNegativeNumber);
-  auto* height = run->add_option("--height", run_request.height_mm,
-                                 "size in mm of the model's largest side on paper")
-                     ->check(CLI::PositiveNumber);
+  std::string height_text;
+  auto* height = run->add_option("--height", height_text,
+                                 "size of the model's largest side on paper: 200, 200mm, 20cm, "
+                                 "8in (a bare number is mm)");
   run->add_option("--scale", run_request.scale, "mm on paper per model unit")
       ->check(CLI::PositiveNumber)
       ->excludes(height);
@@ -259,6 +260,13 @@ int main_impl(int argc, char** argv) {
   try {
     if (*run) {
       for (const auto& input : run_inputs) run_request.inputs.emplace_back(input);
+      if (!height_text.empty()) {
+        try {
+          run_request.height_mm = parse_length_mm(height_text);
+        } catch (const std::invalid_argument& e) {
+          throw InvalidInputException(std::string("--height: ") + e.what());
+        }
+      }
       return execute(run_request, common);
     }
     if (*batch) {

@@ -132,6 +132,30 @@ TEST(Cli, BadJobFileAndBadToleranceExit2) {
   EXPECT_NE(t.output.find("tolerance"), std::string::npos) << t.output;
 }
 
+TEST(Cli, HeightTakesUnits) {
+  const auto dir = testing::fresh_temp_dir("height");
+  const auto mesh = dir / "cylinder.obj";
+  ASSERT_EQ(run_command("generate open_cylinder " + mesh.string()).exit_code, 0);
+  auto mm_per_unit = [&](const std::string& height) {
+    const auto out = dir / height;
+    const auto r = run_command("run " + mesh.string() + " -q --height " + height + " --out " +
+                               out.string());
+    EXPECT_EQ(r.exit_code, 0) << height << "\n" << r.output;
+    const auto report =
+        nlohmann::json::parse(testing::read_text(out / "cylinder" / "report.json"));
+    return report.at("result").at("mm_per_unit").get<double>();
+  };
+  const double mm = mm_per_unit("150");
+  EXPECT_GT(mm, 0.0);
+  EXPECT_DOUBLE_EQ(mm_per_unit("15cm"), mm);
+  EXPECT_NEAR(mm_per_unit("2in"), mm * 50.8 / 150.0, 1e-9 * mm);
+  const auto bad = run_command("run " + mesh.string() + " -q --height 150furlongs --out " +
+                               (dir / "bad").string());
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.output.find("--height: expected a positive length"), std::string::npos)
+      << bad.output;
+}
+
 TEST(Cli, MissingFileIsAnErrorRow) {
   const auto dir = testing::fresh_temp_dir("missing");
   const auto r =
