@@ -5,8 +5,11 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/Utils/PropertyManager.hh>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cfloat>
@@ -16,6 +19,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <initializer_list>
 #include <map>
 #include <mutex>
@@ -317,6 +321,8 @@ struct Prescan {
   std::uint64_t corners = 0;
   std::filesystem::path material_library;  // OBJ mtllib, resolved against the OBJ's folder
   std::string ply_texture;                 // PLY "comment TextureFile <name>"
+  bool off_comments = false;               // an ascii OFF with '#' comments
+  std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
 };
 
 void check_counts(const std::string& file, std::uint64_t vertices, std::uint64_t faces,
@@ -433,18 +439,18 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
 
 // -- OFF
 
-// The next line with content; comments are refused because OpenMesh's OFF reader does not skip
-// them.
-bool next_off_line(FileScanner& in, const std::string& file, std::string_view& line) {
+// The next line with content, without its comment ('#' to the end of the line). OpenMesh's OFF
+// reader would misread comments as data, so a file that has any is handed to it without them
+// (`Prescan::off_comments`).
+bool next_off_line(FileScanner& in, std::string_view& line, bool& comments) {
   while (in.next_line(line)) {
-    line = trim(line);
-    if (line.empty()) continue;
-    if (line.front() == '#') {
-      throw_invalid(file, at_line(in.line_number()) +
-                              "comments after the OFF keyword are not supported (OpenMesh's "
-                              "reader would misread them as data)");
+    const std::size_t hash = line.find('#');
+    if (hash != std::string_view::npos) {
+      comments = true;
+      line = line.substr(0, hash);
     }
-    return true;
+    line = trim(line);
+    if (!line.empty()) return true;
   }
   return false;
 }
@@ -453,7 +459,19 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
   Prescan scan;
   scan.format = Format::off;
   std::string_view line;
-  in.next_line(line);
+  // Comment and blank lines may come before the keyword (CGAL writes a block of them).
+  while (in.next_line(line)) {
+    const std::string_view content = trim(line);
+    if (!content.empty() && content.front() != '#') break;
+    scan.off_comments = scan.off_comments || !content.empty();
+    line = {};
+  }
+  const std::string first_line = at_line(in.line_number());
+  if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
+    scan.off_comments = true;
+    line = line.substr(0, hash);
+    while (!line.empty() && is_space(line.back())) line.remove_suffix(1);
+  }
   std::string_view rest = line;
   const std::string_view keyword = next_token(rest);
   // OpenMesh checks the first line for [ST][C][N][4][n]OFF[ BINARY].
@@ -465,28 +483,31 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
   const bool normals = keyword.substr(prefix, 1) == "N";
   if (normals) ++prefix;
   if (keyword.substr(prefix, 1) == "4" || keyword.substr(prefix, 1) == "n") {
-    throw_invalid(file, "line 1: only 3-dimensional OFF is supported, got " + in_quotes(keyword));
+    throw_invalid(file, first_line + "only 3-dimensional OFF is supported, got " + in_quotes(keyword));
   }
   if (line.empty() || is_space(line.front()) || keyword.substr(prefix) != "OFF") {
     throw_invalid(file,
-                  "line 1: expected 'OFF' (optionally prefixed by ST, C, N) at the start of "
+                  first_line + "expected 'OFF' (optionally prefixed by ST, C, N) at the start of "
                   "the first line, got " +
                       in_quotes(line));
   }
   const std::string_view after = next_token(rest);
   const bool binary = after == "BINARY";
   if (binary && (line.substr(keyword.size(), 7) != " BINARY" || !trim(rest).empty())) {
-    throw_invalid(file, "line 1: write the binary OFF header exactly as '" + std::string(keyword) +
+    throw_invalid(file, first_line + "write the binary OFF header exactly as '" + std::string(keyword) +
                             " BINARY'");
   }
   if (!after.empty() && !binary) {
-    throw_invalid(file, "line 1: unexpected " + in_quotes(after) +
+    throw_invalid(file, first_line + "unexpected " + in_quotes(after) +
                             " after 'OFF' (OpenMesh's reader expects the counts on the next line)");
   }
 
   if (binary) {
     if (prefix != 0) {
       throw_invalid(file, "binary OFF with ST, C or N prefixes is not supported");
+    }
+    if (scan.off_comments) {
+      throw_invalid(file, "comments before a binary OFF header are not supported");
     }
     unsigned char header[12];
     if (!in.read_bytes(header, sizeof header)) {
@@ -519,7 +540,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     return scan;
   }
 
-  if (!next_off_line(in, file, line)) {
+  if (!next_off_line(in, line, scan.off_comments)) {
     throw_invalid(file, "truncated: expected the counts line (vertices faces edges) after 'OFF'");
   }
   std::int64_t counts[3] = {0, 0, 0};
@@ -549,7 +570,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
   check_counts(file, vertices, faces, options);
 
   for (std::uint64_t vertex = 0; vertex < vertices; ++vertex) {
-    if (!next_off_line(in, file, line)) {
+    if (!next_off_line(in, line, scan.off_comments)) {
       throw_invalid(file, "truncated: the header declares " + declared(vertices, faces) +
                               ", but the file ends after " +
                               counted(vertex, "vertex line", "vertex lines"));
@@ -572,7 +593,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     }
   }
   for (std::uint64_t face = 0; face < faces; ++face) {
-    if (!next_off_line(in, file, line)) {
+    if (!next_off_line(in, line, scan.off_comments)) {
       throw_invalid(file, "truncated: the header declares " + declared(vertices, faces) +
                               ", but the file ends after " +
                               counted(face, "face line", "face lines"));
@@ -599,14 +620,11 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     }
     // Without the C prefix OpenMesh reads faces token by token, so trailing values (colors)
     // would be taken for the next face.
-    if (!colors && !trim(tokens).empty()) {
-      throw_invalid(file, at_line(in.line_number()) + "face " + std::to_string(face) +
-                              " has values after its " + std::to_string(count) +
-                              " vertex indices (face colors need a COFF header)");
-    }
+    // They are dropped before OpenMesh reads the file (`Prescan::off_face_extras`).
+    if (!colors && !trim(tokens).empty()) ++scan.off_face_extras;
     scan.corners += static_cast<std::uint64_t>(count);
   }
-  if (next_off_line(in, file, line)) {
+  if (next_off_line(in, line, scan.off_comments)) {
     throw_invalid(file, "the header declares " + declared(vertices, faces) +
                             ", but more data follows at line " + std::to_string(in.line_number()) +
                             " (wrong counts?)");
@@ -1249,18 +1267,69 @@ class RecordingImporter final : public OpenMesh::IO::BaseImporter {
   RawMesh& raw_;
 };
 
-RawMesh read_with_openmesh(const std::filesystem::path& path, const std::string& file) {
+// An ascii OFF as OpenMesh's reader can take it: no comments, no blank lines, and faces without
+// values after their indices (the pre-scan has checked the rest).
+std::string clean_off(const std::filesystem::path& path, const std::string& file,
+                      const Prescan& scan) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw_io(file, "cannot open the file");
+  std::string out;
+  std::string line;
+  std::uint64_t content_lines = 0;
+  const std::uint64_t first_face = 2 + scan.vertices;
+  while (std::getline(in, line)) {
+    std::string_view content = line;
+    const std::size_t hash = content.find('#');
+    if (hash != std::string_view::npos) content = content.substr(0, hash);
+    content = trim(content);
+    if (content.empty()) continue;
+    if (content_lines >= first_face && scan.off_face_extras > 0) {
+      std::string_view tokens = content;
+      std::int64_t count = 0;
+      parse_integer(next_token(tokens), count);
+      for (std::int64_t corner = 0; corner < count; ++corner) next_token(tokens);
+      content = content.substr(0, content.size() - tokens.size());
+    }
+    out.append(content);
+    out.push_back('\n');
+    ++content_lines;
+  }
+  return out;
+}
+
+RawMesh read_with_openmesh(const std::filesystem::path& path, const std::string& file,
+                           const Prescan& scan) {
   RawMesh raw;
   RecordingImporter importer(raw);
   OpenMesh::IO::Options options;
   options += OpenMesh::IO::Options::VertexTexCoord;
   options += OpenMesh::IO::Options::FaceTexCoord;
+  // OpenMesh's stream reader skips the header check that sets the OFF reader's options, so a
+  // cleaned OFF goes through a temporary file.
+  std::filesystem::path source = path;
+  struct RemoveOnExit {
+    std::filesystem::path path;
+    ~RemoveOnExit() {
+      std::error_code ignored;
+      if (!path.empty()) std::filesystem::remove(path, ignored);
+    }
+  } cleaned;
+  if (scan.format == Format::off && (scan.off_comments || scan.off_face_extras > 0)) {
+    static std::atomic<std::uint64_t> counter{0};
+    cleaned.path = std::filesystem::temp_directory_path() /
+                   ("papercraft-clean-" + std::to_string(::getpid()) + "-" +
+                    std::to_string(counter.fetch_add(1)) + ".off");
+    std::ofstream out(cleaned.path, std::ios::binary);
+    out << clean_off(path, file, scan);
+    if (!out.flush()) throw_io(file, "cannot write a cleaned copy to " + cleaned.path.string());
+    source = cleaned.path;
+  }
   // The reader modules are process-wide singletons that keep per-file state in members.
   static std::mutex reader_mutex;
   bool ok = false;
   {
     std::lock_guard<std::mutex> lock(reader_mutex);
-    ok = OpenMesh::IO::IOManager().read(path.string(), importer, options);
+    ok = OpenMesh::IO::IOManager().read(source.string(), importer, options);
   }
   if (!ok) throw_io(file, "OpenMesh's reader failed on the file");
   return raw;
@@ -1349,15 +1418,64 @@ Vec3d cross(const Vec3d& a, const Vec3d& b) {
   return OpenMesh::cross(a, b);
 }
 
-// Fan triangulation with texture coordinates; refuses polygons a fan would fold over.
+// Ear clipping of a polygon (indices into `points`, in order) in the plane orthogonal to its
+// Newell normal; corner positions in the polygon go to `ears`. False when no ear is left to
+// clip (a self-intersecting polygon).
+bool ear_clip(const Vec3d* const* points, std::size_t size, const Vec3d& normal,
+              std::vector<std::array<std::size_t, 3>>& ears) {
+  // Drop the normal's dominant axis; flip so that the projected polygon runs counterclockwise.
+  int axis = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (std::abs(normal[k]) > std::abs(normal[axis])) axis = k;
+  }
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const double flip = normal[axis] < 0.0 ? -1.0 : 1.0;
+  std::vector<std::array<double, 2>> p(size);
+  for (std::size_t i = 0; i < size; ++i) p[i] = {(*points[i])[u], flip * (*points[i])[v]};
+  auto orient = [&](std::size_t a, std::size_t b, std::size_t c) {
+    return (p[b][0] - p[a][0]) * (p[c][1] - p[a][1]) - (p[b][1] - p[a][1]) * (p[c][0] - p[a][0]);
+  };
+  std::vector<std::size_t> ring(size);
+  std::iota(ring.begin(), ring.end(), std::size_t{0});
+  ears.clear();
+  while (ring.size() > 3) {
+    bool clipped = false;
+    for (std::size_t i = 0; i < ring.size() && !clipped; ++i) {
+      const std::size_t a = ring[(i + ring.size() - 1) % ring.size()], b = ring[i],
+                        c = ring[(i + 1) % ring.size()];
+      if (orient(a, b, c) <= 0.0) continue;  // reflex or flat corner
+      bool empty = true;
+      for (const std::size_t q : ring) {
+        if (q == a || q == b || q == c) continue;
+        if (orient(a, b, q) >= 0.0 && orient(b, c, q) >= 0.0 && orient(c, a, q) >= 0.0) {
+          empty = false;
+          break;
+        }
+      }
+      if (!empty) continue;
+      ears.push_back({a, b, c});
+      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  if (orient(ring[0], ring[1], ring[2]) <= 0.0) return false;
+  ears.push_back({ring[0], ring[1], ring[2]});
+  return true;
+}
+
+// Fan triangulation with texture coordinates; polygons a fan would fold over are ear-clipped,
+// and refused when that fails too (self-intersecting).
 Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const std::string& file,
                  std::vector<std::string>& repairs) {
   Soup soup;
   soup.triangles.reserve(raw.corners.size() >= 2 * raw.n_faces()
                              ? raw.corners.size() - 2 * raw.n_faces()
                              : raw.n_faces());
-  std::uint64_t polygons = 0, non_convex = 0;
-  std::size_t first_non_convex = 0;
+  std::uint64_t polygons = 0, non_convex = 0, self_intersecting = 0;
+  std::size_t first_self_intersecting = 0;
+  std::vector<const Vec3d*> points;
+  std::vector<std::array<std::size_t, 3>> ears;
   for (std::size_t f = 0; f < raw.n_faces(); ++f) {
     const std::size_t begin = raw.face_start[f];
     const std::size_t size = raw.face_start[f + 1] - begin;
@@ -1375,7 +1493,24 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
             cross(raw.positions[corner[i]] - origin, raw.positions[corner[i + 1]] - origin);
         if (OpenMesh::dot(turn, normal) < 0.0) folds = true;
       }
-      if (folds && non_convex++ == 0) first_non_convex = f;
+      if (folds) {
+        ++non_convex;
+        points.resize(size);
+        for (std::size_t i = 0; i < size; ++i) points[i] = &raw.positions[corner[i]];
+        if (!ear_clip(points.data(), size, normal, ears)) {
+          if (self_intersecting++ == 0) first_self_intersecting = f;
+          continue;
+        }
+        for (const auto& ear : ears) {
+          soup.triangles.push_back({corner[ear[0]], corner[ear[1]], corner[ear[2]]});
+          soup.source_face.push_back(static_cast<int>(f));
+          if (with_uvs) {
+            soup.corner_uv.push_back({raw.corner_uv[begin + ear[0]], raw.corner_uv[begin + ear[1]],
+                                      raw.corner_uv[begin + ear[2]]});
+          }
+        }
+        continue;
+      }
     }
     for (std::size_t i = 1; i + 1 < size; ++i) {
       soup.triangles.push_back({corner[0], corner[i], corner[i + 1]});
@@ -1386,11 +1521,17 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
       }
     }
   }
-  if (non_convex > 0) {
+  if (self_intersecting > 0) {
     throw_invalid(file, "mesh has " +
-                            counted(non_convex, "non-convex polygon", "non-convex polygons") +
-                            ", first face " + std::to_string(first_non_convex) +
+                            counted(self_intersecting, "self-intersecting polygon",
+                                    "self-intersecting polygons") +
+                            " (no ear to clip), first face " +
+                            std::to_string(first_self_intersecting) +
                             "; triangulate it before loading");
+  }
+  if (non_convex > 0) {
+    repairs.push_back("ear-clipped " +
+                      counted(non_convex, "non-convex polygon", "non-convex polygons"));
   }
   if (soup.triangles.size() > options.max_faces) {
     throw_invalid(file, "mesh has " + std::to_string(soup.triangles.size()) +
@@ -1818,6 +1959,11 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
   const std::size_t vertices_with_uv =
       static_cast<std::size_t>(std::count(raw.vertex_has_uv.begin(), raw.vertex_has_uv.end(), 1));
   bool with_uvs = false;
+  if (scan.off_face_extras > 0) {
+    loaded.repairs.push_back("ignored the values after the vertex indices of " +
+                             counted(scan.off_face_extras, "face", "faces") +
+                             " (face colors need a COFF header)");
+  }
   if (faces_with_uv > 0) {
     with_uvs = faces_with_uv == raw.n_faces();
     if (!with_uvs) {
@@ -1954,7 +2100,7 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
         break;
     }
   }
-  RawMesh raw = read_with_openmesh(path, file);
+  RawMesh raw = read_with_openmesh(path, file, scan);
   return validate_and_build(raw, scan, options, file, path);
 }
 

@@ -629,13 +629,45 @@ TEST_F(LoadOpenMeshTest, DuplicateFace) {
                                       {"1 duplicate face", "face 4 repeats face 0"});
 }
 
-TEST_F(LoadOpenMeshTest, NonConvexPolygon) {
-  // An L-shaped hexagon whose fan from the first corner folds over.
+TEST_F(LoadOpenMeshTest, NonConvexPolygonIsEarClipped) {
+  // An L-shaped hexagon whose fan from the first corner folds over; its area is 1.5.
+  const LoadedMesh loaded = load_mesh(write("ell.obj",
+                                            "v 1 1 0\nv 0 1 0\nv 0 0 0\nv 2 0 0\nv 2 0.5 0\n"
+                                            "v 1 0.5 0\nf 1 2 3 4 5 6\n"));
+  EXPECT_EQ(loaded.mesh.n_faces(), 4u);
+  EXPECT_NEAR(surface_area(loaded.mesh), 1.5, 1e-12);
+  for (auto f : loaded.mesh.faces()) {
+    EXPECT_GT(loaded.mesh.calc_face_normal(f)[2], 0.0) << "every triangle keeps the orientation";
+  }
+  ASSERT_EQ(boundary_loops(loaded.mesh).size(), 1u);
+  EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(), "ear-clipped 1 non-convex polygon"),
+            loaded.repairs.end());
+  // The same L with its normal pointing down (corners in the other order) and in the yz plane.
+  const LoadedMesh flipped = load_mesh(write("ell_yz.obj",
+                                             "v 0 1 1\nv 0 0.5 1\nv 0 0.5 2\nv 0 0 2\nv 0 0 0\n"
+                                             "v 0 1 0\nf 1 2 3 4 5 6\n"));
+  EXPECT_EQ(flipped.mesh.n_faces(), 4u);
+  EXPECT_NEAR(surface_area(flipped.mesh), 1.5, 1e-12);
+  // A self-intersecting (bow-tie) pentagon has no consistent triangulation.
   expect_error<InvalidInputException>(
-      write("ell.obj",
-            "v 1 1 0\nv 0 1 0\nv 0 0 0\nv 2 0 0\nv 2 0.5 0\nv 1 0.5 0\n"
-            "f 1 2 3 4 5 6\n"),
-      {"non-convex", "first face 0"});
+      write("star.obj", "v 0 0 0\nv 2 2 0\nv 2 0 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5\n"),
+      {"1 self-intersecting polygon", "first face 0"});
+}
+
+TEST_F(LoadOpenMeshTest, OffCommentsAndBlankLines) {
+  // CGAL writes a block of comments before the keyword; others comment sections and values.
+  std::string text = tetra_off();
+  text.replace(text.find("OFF\n"), 4, "OFF # keyword\n");
+  text.insert(text.find("4 4 0\n") + 6, "\n# vertices\n");
+  text.replace(text.find("3 0 2 1\n"), 8, "# faces\n\n3 0 2 1   # first face\n");
+  const LoadedMesh loaded =
+      load_mesh(write("commented.off", "# Output of a CGAL tool\n#CBP\n\n# ENDCBP\n\n" + text));
+  expect_closed_tetrahedron(loaded);
+  EXPECT_TRUE(loaded.repairs.empty());
+  // An error after comments still names the right line.
+  std::string broken = "# header\n" + tetra_off();
+  broken.replace(broken.find("3 0 2 1\n"), 8, "3 0 2 x\n");
+  expect_error<InvalidInputException>(write("broken.off", broken), {"line 8", "'x'"});
 }
 
 TEST_F(LoadOpenMeshTest, LayoutsOpenMeshWouldMisread) {
@@ -643,11 +675,16 @@ TEST_F(LoadOpenMeshTest, LayoutsOpenMeshWouldMisread) {
   expect_error<InvalidInputException>(
       write("comment.ply", tetra_ply_binary(false, "comment made by hand\n")),
       {"misplace the binary data"});
-  // Face colors without a COFF header would be read as the next face's vertex count.
+  // Face colors without a COFF header would be read as the next face's vertex count; they are
+  // dropped before OpenMesh reads the faces.
   std::string colored = tetra_off();
   colored.replace(colored.find("3 0 2 1\n"), 8, "3 0 2 1 255 0 0\n");
-  expect_error<InvalidInputException>(write("colors.off", colored),
-                                      {"line 7", "face colors need a COFF header"});
+  const LoadedMesh loaded = load_mesh(write("colors.off", colored));
+  expect_closed_tetrahedron(loaded);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0],
+            "ignored the values after the vertex indices of 1 face (face colors need a COFF "
+            "header)");
   // A list OpenMesh cannot skip.
   expect_error<InvalidInputException>(
       write("texcoord_list.ply",
