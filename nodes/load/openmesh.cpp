@@ -1800,7 +1800,30 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
   }
   const auto non_manifold_vertices =
       static_cast<std::uint64_t>(std::count(bad_vertex.begin(), bad_vertex.end(), 1));
-  if (non_manifold_vertices > 0) {
+  if (non_manifold_vertices > 0 && repair) {
+    // Every fan of a vertex after its first gets a copy of the vertex (same position, same
+    // input vertex): the surface is unchanged and becomes manifold, pieces merely touch there.
+    // A fan root is a slot, so it names one fan of one vertex.
+    std::unordered_map<std::uint32_t, int> copy_of_fan;
+    for (std::size_t slot = 0; slot < 3 * triangles; ++slot) {
+      int& corner = soup.triangles[slot / 3][slot % 3];
+      const int v = corner;
+      if (!bad_vertex[v]) continue;
+      const std::uint32_t root = fans.find(static_cast<std::uint32_t>(slot));
+      if (fan_of_vertex[v] == root) continue;
+      const auto [it, added] =
+          copy_of_fan.try_emplace(root, static_cast<int>(soup.positions.size()));
+      if (added) {
+        soup.positions.push_back(soup.positions[v]);
+        soup.source_vertex.push_back(soup.source_vertex[v]);
+      }
+      corner = it->second;
+    }
+    repairs.push_back("split " +
+                      counted(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
+                      " into one vertex per fan (" +
+                      counted(copy_of_fan.size(), "copy", "copies") + " added)");
+  } else if (non_manifold_vertices > 0) {
     int first = INT_MAX;
     for (std::size_t v = 0; v < vertices; ++v) {
       if (bad_vertex[v]) first = std::min(first, soup.source_vertex[v]);

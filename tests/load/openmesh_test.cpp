@@ -597,13 +597,34 @@ TEST_F(LoadOpenMeshTest, EdgeSharedByThreeFaces) {
 }
 
 TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
-  // Two closed tetrahedra that share only vertex 0.
-  expect_error<InvalidInputException>(
+  // Two closed tetrahedra that share only vertex 0; the second's first corner names a
+  // different fan of vertex 0 than the first's.
+  const fs::path path =
       write("bowtie.off",
             "OFF\n7 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n-1 0 0\n0 -1 0\n0 0 -1\n"
             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
-            "3 0 5 4\n3 0 4 6\n3 0 6 5\n3 4 5 6\n"),
-      {"1 non-manifold vertex", "first vertex 0"});
+            "3 0 5 4\n3 0 4 6\n3 0 6 5\n3 4 5 6\n");
+  LoadOptions strict;
+  strict.repair = false;
+  expect_error<InvalidInputException>(path, {"1 non-manifold vertex", "first vertex 0"}, strict);
+  // Repaired: vertex 0 is split, one copy per tetrahedron.
+  const LoadedMesh loaded = load_mesh(path);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 8u);
+  EXPECT_EQ(loaded.mesh.n_faces(), 8u);
+  EXPECT_EQ(connected_components(loaded.mesh), 2);
+  EXPECT_TRUE(boundary_loops(loaded.mesh).empty());
+  EXPECT_EQ(euler_characteristic(loaded.mesh), 4);
+  int copies_of_zero = 0;
+  for (auto v : loaded.mesh.vertices()) {
+    if (input_vertex_of(loaded.mesh, v) == 0) {
+      ++copies_of_zero;
+      EXPECT_EQ(loaded.mesh.point(v), Mesh::Point(0, 0, 0));
+    }
+  }
+  EXPECT_EQ(copies_of_zero, 2);
+  ASSERT_FALSE(loaded.repairs.empty());  // (the second tetrahedron also faces inwards)
+  EXPECT_EQ(loaded.repairs[0],
+            "split 1 non-manifold vertex into one vertex per fan (1 copy added)");
 }
 
 TEST_F(LoadOpenMeshTest, DegenerateFaces) {
