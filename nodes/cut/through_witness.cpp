@@ -61,29 +61,43 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   Eigen::VectorXd f;
   if (disjoint) f = harmonic_field(part, first, second, options.harmonic);
   const double f_witness = disjoint ? field_value_at(part, f, witness) : -1.0;
-  const auto [from, to] = farthest_vertex_pair(part);
+  // The field across the part (between its farthest vertices) costs a sweep and a second
+  // solve: it is computed only when the cuts along f do not split the part.
+  bool across_ready = false;
   Eigen::VectorXd g;
-  if (from != to) g = harmonic_field(part, {from}, {to}, options.harmonic);
-  struct Attempt {
-    const Eigen::VectorXd* field;
-    double value;
-    bool across;
+  auto across = [&]() -> const Eigen::VectorXd* {
+    if (!across_ready) {
+      across_ready = true;
+      const auto [from, to] = farthest_vertex_pair(part);
+      if (from != to) g = harmonic_field(part, {from}, {to}, options.harmonic);
+    }
+    return g.size() > 0 ? &g : nullptr;
   };
+  struct Attempt {
+    bool across;
+    bool at_witness;  // else at 0.5
+  };
+  // In order: f through the witness (when it lies inside the margins), g through the
+  // witness, f at 0.5, g at 0.5.
   std::vector<Attempt> attempts;
-  if (f_witness >= lo && f_witness <= hi) attempts.push_back({&f, f_witness, false});
-  if (g.size() > 0) {
-    attempts.push_back({&g, std::clamp(field_value_at(part, g, witness), lo, hi), true});
-  }
-  if (disjoint) attempts.push_back({&f, 0.5, false});
-  if (g.size() > 0) attempts.push_back({&g, 0.5, true});
+  if (f_witness >= lo && f_witness <= hi) attempts.push_back({false, true});
+  attempts.push_back({true, true});
+  if (disjoint) attempts.push_back({false, false});
+  attempts.push_back({true, false});
   // Slivers are refused first; on a small part where nothing else splits, any split is
   // still progress.
   for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
     for (const Attempt& attempt : attempts) {
-      std::vector<Mesh> pieces =
-          cut_along_isoline(part, *attempt.field, attempt.value, options.cut);
+      const Eigen::VectorXd* field = attempt.across ? across() : &f;
+      if (!field) continue;
+      const double value =
+          !attempt.at_witness
+              ? 0.5
+              : (attempt.across ? std::clamp(field_value_at(part, *field, witness), lo, hi)
+                                : f_witness);
+      std::vector<Mesh> pieces = cut_along_isoline(part, *field, value, options.cut);
       if (makes_progress(part, pieces, area, min_fraction)) {
-        return {std::move(pieces), attempt.value, attempt.across};
+        return {std::move(pieces), value, attempt.across};
       }
     }
   }
