@@ -513,7 +513,8 @@ class BranchAndBound {
   // Bounds whole subtrees of the source trees by one corner's distance plus the farthest
   // point of the subtree's box from it (d(., B) is 1-Lipschitz); marks the triangles of the
   // subtrees that this does not settle as active.
-  void cull_subtrees();
+  // With stop_at_reject, returns as soon as a corner is farther than tau.
+  void cull_subtrees(bool stop_at_reject);
   void evaluate_vertices();
   // Splits `piece` into children with bounds for `threshold`; returns the queries made.
   std::size_t split(const Piece& piece, double threshold, std::vector<Piece>& children) const;
@@ -552,7 +553,7 @@ Corner BranchAndBound::query(int side, const Vec3& point, std::span<const int> c
   return {point, hit.distance, hit.triangle};
 }
 
-void BranchAndBound::cull_subtrees() {
+void BranchAndBound::cull_subtrees(bool stop_at_reject) {
   active_.resize(directions_.size());
   for (std::size_t side = 0; side < directions_.size(); ++side) {
     const TriangleMesh& source = *directions_[side].source;
@@ -588,6 +589,7 @@ void BranchAndBound::cull_subtrees() {
         ++evaluations_;
         offer_lower(probes[i], static_cast<int>(side), tree->triangle_at_slot(subtree.first_slot));
       }
+      if (stop_at_reject && rejected()) return;
       const double level_threshold = threshold();
       next.clear();
       for (std::size_t i = 0; i < level.size(); ++i) {
@@ -683,9 +685,9 @@ HausdorffResult BranchAndBound::run() {
   for (std::size_t side = 0; side < directions_.size(); ++side) {
     neighbours_[side] = edge_neighbours(directions_[side].target->mesh());
   }
-  cull_subtrees();
-  evaluate_vertices();
   const bool stop_at_reject = mode_ == Mode::decision && !options_.locate_maximum;
+  cull_subtrees(stop_at_reject);
+  if (!(stop_at_reject && rejected())) evaluate_vertices();
 
   if (!(stop_at_reject && rejected())) {
     // Bounds of every input triangle, in parallel; then the undecided ones are queued.
