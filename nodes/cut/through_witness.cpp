@@ -26,6 +26,12 @@ bool makes_progress(const Mesh& part, const std::vector<Mesh>& pieces, double ar
   return true;
 }
 
+double median(const Eigen::VectorXd& field) {
+  std::vector<double> values(field.data(), field.data() + field.size());
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps) {
@@ -75,15 +81,25 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   };
   struct Attempt {
     bool across;
-    bool at_witness;  // else at 0.5
+    bool at_witness;  // else at 0.5, or for g without f at its median
   };
   // In order: f through the witness (when it lies inside the margins), g through the
   // witness, f at 0.5, g at 0.5.
+  // Without f (a fan whose apex lies on its base loop: typically a band one triangle wide,
+  // every vertex on its one boundary loop) the worst point is usually on the fan, far from
+  // the part, and a cut through it only shaves a tip off the band, again and again. g, fixed
+  // at two single vertices, is close to 0.5 nearly everywhere, so 0.5 shaves a tip too:
+  // halve the band at the median of g over the vertices instead.
   std::vector<Attempt> attempts;
   if (f_witness >= lo && f_witness <= hi) attempts.push_back({false, true});
-  attempts.push_back({true, true});
-  if (disjoint) attempts.push_back({false, false});
-  attempts.push_back({true, false});
+  if (disjoint) {
+    attempts.push_back({true, true});
+    attempts.push_back({false, false});
+    attempts.push_back({true, false});
+  } else {
+    attempts.push_back({true, false});
+    attempts.push_back({true, true});
+  }
   // Slivers are refused first; on a small part where nothing else splits, any split is
   // still progress.
   for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
@@ -92,7 +108,7 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
       if (!field) continue;
       const double value =
           !attempt.at_witness
-              ? 0.5
+              ? (disjoint || !attempt.across ? 0.5 : median(*field))
               : (attempt.across ? std::clamp(field_value_at(part, *field, witness), lo, hi)
                                 : f_witness);
       std::vector<Mesh> pieces = cut_along_isoline(part, *field, value, options.cut);
