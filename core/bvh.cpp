@@ -235,6 +235,55 @@ void TriangleBvh::build(const TriangleBvhOptions& options) {
   }
   slot_of_triangle_.assign(triangle_count, -1);
   for (int s = 0; s < static_cast<int>(packed_.size()); ++s) slot_of_triangle_[packed_[s].id] = s;
+  // Slot ranges of the internal nodes, children before parents.
+  node_slots_.assign(nodes_.size(), {0, -1});
+  std::vector<int> pending = {0};
+  while (!pending.empty()) {
+    const int i = pending.back();
+    const Node& n = nodes_[i];
+    bool ready = true;
+    for (int k = 0; k < 2; ++k) {
+      if (n.child[k] >= 0 && n.count[k] == 0 && node_slots_[n.child[k]][1] < 0) {
+        pending.push_back(n.child[k]);
+        ready = false;
+      }
+    }
+    if (!ready) continue;
+    pending.pop_back();
+    int first = std::numeric_limits<int>::max(), last = 0;
+    for (int k = 0; k < 2; ++k) {
+      if (n.child[k] < 0) continue;
+      const std::array<int, 2> range =
+          n.count[k] > 0 ? std::array<int, 2>{n.child[k], n.count[k]} : node_slots_[n.child[k]];
+      if (range[1] == 0) continue;
+      first = std::min(first, range[0]);
+      last = std::max(last, range[0] + range[1]);
+    }
+    node_slots_[i] = first <= last ? std::array<int, 2>{first, last - first}
+                                   : std::array<int, 2>{0, 0};
+  }
+}
+
+BvhSubtree TriangleBvh::root() const {
+  return {bounds_, 0, node_slots_[0][0], node_slots_[0][1]};
+}
+
+std::array<BvhSubtree, 2> TriangleBvh::children(const BvhSubtree& subtree) const {
+  std::array<BvhSubtree, 2> out;
+  if (subtree.node < 0) return out;
+  const Node& n = nodes_[subtree.node];
+  for (int k = 0; k < 2; ++k) {
+    if (n.child[k] < 0) continue;
+    Aabb box;
+    box.min = Vec3(n.min[k][0], n.min[k][1], n.min[k][2]);
+    box.max = Vec3(n.max[k][0], n.max[k][1], n.max[k][2]);
+    if (n.count[k] > 0) {
+      out[k] = {box, -1, n.child[k], n.count[k]};
+    } else {
+      out[k] = {box, n.child[k], node_slots_[n.child[k]][0], node_slots_[n.child[k]][1]};
+    }
+  }
+  return out;
 }
 
 void TriangleBvh::visit_triangle(const Vec3& p, int slot, double& best_squared,
@@ -333,6 +382,12 @@ std::vector<BvhClosestHit> TriangleBvh::closest(const std::vector<Vec3>& points)
 }
 
 void TriangleBvh::triangles_meeting(const Aabb& box, std::vector<int>& out) const {
+  triangles_meeting(box, out, std::numeric_limits<std::size_t>::max());
+}
+
+bool TriangleBvh::triangles_meeting(const Aabb& box, std::vector<int>& out,
+                                    std::size_t limit) const {
+  const std::size_t start = out.size();
   auto meets = [&](const Node& n, int k) {
     for (int axis = 0; axis < 3; ++axis) {
       if (n.min[k][axis] > box.max[axis] || n.max[k][axis] < box.min[axis]) return false;
@@ -362,8 +417,10 @@ void TriangleBvh::triangles_meeting(const Aabb& box, std::vector<int>& out) cons
       for (int s = n.child[k]; s < n.child[k] + n.count[k]; ++s) {
         if (triangle_meets(packed_[s])) out.push_back(packed_[s].id);
       }
+      if (out.size() - start > limit) return false;
     }
   }
+  return true;
 }
 
 double TriangleBvh::squared_distance_to_triangle(const Vec3& p, int t) const {

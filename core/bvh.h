@@ -47,6 +47,15 @@ struct Aabb {
   double squared_distance(const Vec3& p) const;
 };
 
+/// A subtree of a TriangleBvh: its box and the triangles below it, which are the consecutive
+/// slots [first_slot, first_slot + slot_count) of the tree's leaf order.
+struct BvhSubtree {
+  Aabb box;
+  int node = -1;  // internal node (has children), or -1 for a leaf or an empty subtree
+  int first_slot = 0;
+  int slot_count = 0;
+};
+
 /// Immutable AABB tree (binned SAH, flat depth-first node array) over a copy of a mesh.
 /// Queries are const and safe to run concurrently. Degenerate triangles (zero area,
 /// coincident corners) are valid and behave as the segments or points they are.
@@ -82,6 +91,18 @@ class TriangleBvh {
 
   /// Appends to `out` the index of every triangle whose bounding box meets `box` (closed).
   void triangles_meeting(const Aabb& box, std::vector<int>& out) const;
+  /// The same, giving up once more than `limit` triangles were appended (returns false; `out`
+  /// then holds an incomplete list). Returns true when the list is complete.
+  bool triangles_meeting(const Aabb& box, std::vector<int>& out, std::size_t limit) const;
+
+  /// The whole tree as a subtree, for top-down walks (e.g. bounding a function over groups of
+  /// triangles before looking at single ones).
+  BvhSubtree root() const;
+  /// The two subtrees below an internal one (subtree.node >= 0); an empty one has
+  /// slot_count == 0.
+  std::array<BvhSubtree, 2> children(const BvhSubtree& subtree) const;
+  /// The mesh triangle at a slot of the leaf order. \pre 0 <= slot < triangle count.
+  int triangle_at_slot(int slot) const { return packed_[slot].id; }
 
   /// Squared distance from p to triangle t of mesh(). \pre 0 <= t < triangle count.
   double squared_distance_to_triangle(const Vec3& p, int t) const;
@@ -112,6 +133,8 @@ class TriangleBvh {
   // Triangles in leaf order; slot_of_triangle_[t] is the slot of mesh triangle t.
   std::vector<PackedTriangle> packed_;
   std::vector<int> slot_of_triangle_;
+  // Slots below each internal node: {first, count}.
+  std::vector<std::array<int, 2>> node_slots_;
 };
 
 }  // namespace papercraft

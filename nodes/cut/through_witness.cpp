@@ -26,6 +26,12 @@ bool makes_progress(const Mesh& part, const std::vector<Mesh>& pieces, double ar
   return true;
 }
 
+double median(const Eigen::VectorXd& field) {
+  std::vector<double> values(field.data(), field.data() + field.size());
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 }  // namespace
 
 std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps) {
@@ -61,29 +67,53 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   Eigen::VectorXd f;
   if (disjoint) f = harmonic_field(part, first, second, options.harmonic);
   const double f_witness = disjoint ? field_value_at(part, f, witness) : -1.0;
-  const auto [from, to] = farthest_vertex_pair(part);
+  // The field across the part (between its farthest vertices) costs a sweep and a second
+  // solve: it is computed only when the cuts along f do not split the part.
+  bool across_ready = false;
   Eigen::VectorXd g;
-  if (from != to) g = harmonic_field(part, {from}, {to}, options.harmonic);
-  struct Attempt {
-    const Eigen::VectorXd* field;
-    double value;
-    bool across;
+  auto across = [&]() -> const Eigen::VectorXd* {
+    if (!across_ready) {
+      across_ready = true;
+      const auto [from, to] = farthest_vertex_pair(part);
+      if (from != to) g = harmonic_field(part, {from}, {to}, options.harmonic);
+    }
+    return g.size() > 0 ? &g : nullptr;
   };
+  struct Attempt {
+    bool across;
+    bool at_witness;  // else at 0.5, or for g without f at its median
+  };
+  // In order: f through the witness (when it lies inside the margins), g through the
+  // witness, f at 0.5, g at 0.5.
+  // Without f (a fan whose apex lies on its base loop: typically a band one triangle wide,
+  // every vertex on its one boundary loop) the worst point is usually on the fan, far from
+  // the part, and a cut through it only shaves a tip off the band, again and again. g, fixed
+  // at two single vertices, is close to 0.5 nearly everywhere, so 0.5 shaves a tip too:
+  // halve the band at the median of g over the vertices instead.
   std::vector<Attempt> attempts;
-  if (f_witness >= lo && f_witness <= hi) attempts.push_back({&f, f_witness, false});
-  if (g.size() > 0) {
-    attempts.push_back({&g, std::clamp(field_value_at(part, g, witness), lo, hi), true});
+  if (f_witness >= lo && f_witness <= hi) attempts.push_back({false, true});
+  if (disjoint) {
+    attempts.push_back({true, true});
+    attempts.push_back({false, false});
+    attempts.push_back({true, false});
+  } else {
+    attempts.push_back({true, false});
+    attempts.push_back({true, true});
   }
-  if (disjoint) attempts.push_back({&f, 0.5, false});
-  if (g.size() > 0) attempts.push_back({&g, 0.5, true});
   // Slivers are refused first; on a small part where nothing else splits, any split is
   // still progress.
   for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
     for (const Attempt& attempt : attempts) {
-      std::vector<Mesh> pieces =
-          cut_along_isoline(part, *attempt.field, attempt.value, options.cut);
+      const Eigen::VectorXd* field = attempt.across ? across() : &f;
+      if (!field) continue;
+      const double value =
+          !attempt.at_witness
+              ? (disjoint || !attempt.across ? 0.5 : median(*field))
+              : (attempt.across ? std::clamp(field_value_at(part, *field, witness), lo, hi)
+                                : f_witness);
+      std::vector<Mesh> pieces = cut_along_isoline(part, *field, value, options.cut);
       if (makes_progress(part, pieces, area, min_fraction)) {
-        return {std::move(pieces), attempt.value, attempt.across};
+        return {std::move(pieces), value, attempt.across};
       }
     }
   }

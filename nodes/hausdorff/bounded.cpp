@@ -79,7 +79,12 @@ class PieceQueue {
 struct Direction {
   const TriangleMesh* source;
   const TriangleBvh* target;
+  const TriangleBvh* source_tree = nullptr;  // over *source when one exists
 };
+
+// Subtrees of the source tree with at most this many triangles are not bounded as a whole:
+// their triangles go to the per-triangle bounds directly.
+constexpr int kSmallSubtree = 8;
 
 // The Voronoi partition of a triangle by its corners: point slots 0-2 corners, 3-5 edge
 // midpoints (m01, m12, m20), 6-7 inner points (circumcentre, or where the bisectors of the
@@ -150,6 +155,46 @@ VoronoiRegions voronoi_regions(const Vec3& v0, const Vec3& v1, const Vec3& v2) {
   return r;
 }
 
+// Across each edge of the target: face_edge[3 t + k] for edge k (corner k -> k + 1) of
+// triangle t is the one other triangle holding that edge in the opposite direction, when the
+// edge is held by exactly these two (kOpen: by t alone; kIrregular: any other case). Lets the
+// projection bound check a patch's consistency in linear time.
+constexpr int kOpen = -1;
+constexpr int kIrregular = -2;
+
+std::vector<int> edge_neighbours(const TriangleMesh& mesh) {
+  const std::size_t vertex_count = mesh.vertices.size();
+  const std::size_t edge_count = 3 * mesh.triangles.size();
+  // Directed edges grouped by their first vertex (counting sort).
+  std::vector<int> start(vertex_count + 1, 0);
+  for (const Triangle& f : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) ++start[f[k] + 1];
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  std::vector<int> by_from(edge_count);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (std::size_t e = 0; e < edge_count; ++e) {
+    by_from[fill[mesh.triangles[e / 3][e % 3]]++] = static_cast<int>(e);
+  }
+  auto head = [&](int e) { return mesh.triangles[e / 3][(e % 3 + 1) % 3]; };
+  std::vector<int> neighbour(edge_count, kIrregular);
+  for (std::size_t e = 0; e < edge_count; ++e) {
+    const int from = mesh.triangles[e / 3][e % 3];
+    const int to = head(static_cast<int>(e));
+    int same = 0, opposite = 0, other = -1;
+    for (int i = start[from]; i < start[from + 1]; ++i) same += head(by_from[i]) == to;
+    for (int i = start[to]; i < start[to + 1]; ++i) {
+      if (head(by_from[i]) == from) {
+        ++opposite;
+        other = by_from[i] / 3;
+      }
+    }
+    if (same == 1 && opposite == 0) neighbour[e] = kOpen;
+    if (same == 1 && opposite == 1) neighbour[e] = other;
+  }
+  return neighbour;
+}
+
 // Projection bound for a piece T over a target patch that is a height field above T's plane
 // (a coarse triangle over a fine surface: the strip -> part direction). P = target
 // triangles near T facing T's normal (by at least kMinFacing). If P is consistently oriented
@@ -160,6 +205,8 @@ VoronoiRegions voronoi_regions(const Vec3& v0, const Vec3& v1, const Vec3& v2) {
 // (the distance along the normal to t), which is affine on the convex cell T cap proj(t),
 // so its maximum is at the cell's corners. Returns +infinity when a condition fails.
 constexpr double kMinFacing = 0.05;
+constexpr std::size_t kMaxPatch = 512;
+
 
 double cross2(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
@@ -190,7 +237,7 @@ bool segment_may_meet_triangle(const Vec2& a, const Vec2& b, const std::array<Ve
 }
 
 double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh& target,
-                              double threshold) {
+                              const std::vector<int>& neighbours, double threshold) {
   const Vec3& origin = c[0].point;
   const Vec3 edge1 = c[1].point - origin, edge2 = c[2].point - origin;
   const Vec3 normal = edge1.cross(edge2);
@@ -231,7 +278,8 @@ double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh&
   nearby.clear();
   patch.clear();
   edges.clear();
-  target.triangles_meeting(box, nearby);
+  // A patch much larger than that costs more than the splits it would save.
+  if (!target.triangles_meeting(box, nearby, kMaxPatch)) return kInfinity;
 
   const double side = face_normal(c[0].nearest).dot(n) >= 0.0 ? 1.0 : -1.0;
   for (int t : nearby) {
@@ -294,6 +342,41 @@ double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh&
   }
   if (!seeded) return kInfinity;
 
+  // Consistency of the patch and its boundary edges. With the target's edge neighbours an
+  // edge held by two triangles of the patch is an inner edge of consistent orientation, and
+  // one held by a single patch triangle is a boundary edge of the patch, unless the target is
+  // irregular there; then the general check below (sorting the patch's edges) decides.
+  thread_local std::vector<std::uint32_t> mark;
+  thread_local std::uint32_t generation = 0;
+  if (mark.size() < mesh.triangles.size()) mark.resize(mesh.triangles.size(), 0);
+  if (++generation == 0) {
+    std::fill(mark.begin(), mark.end(), 0);
+    generation = 1;
+  }
+  for (int t : patch) mark[t] = generation;
+  auto boundary_meets_piece = [&](int from, int to) {
+    const Vec2 a = project(mesh.vertices[from]);
+    const Vec2 b = project(mesh.vertices[to]);
+    return !(std::max(a.x(), b.x()) < piece_min.x() || std::min(a.x(), b.x()) > piece_max.x() ||
+             std::max(a.y(), b.y()) < piece_min.y() || std::min(a.y(), b.y()) > piece_max.y()) &&
+           segment_may_meet_triangle(a, b, piece, margin);
+  };
+  bool irregular = false;
+  for (int t : patch) {
+    const Triangle& f = mesh.triangles[t];
+    for (int k = 0; k < 3 && !irregular; ++k) {
+      const int other = neighbours[3 * static_cast<std::size_t>(t) + k];
+      if (other == kIrregular) {
+        irregular = true;
+      } else if ((other == kOpen || mark[other] != generation) &&
+                 boundary_meets_piece(f[k], f[(k + 1) % 3])) {
+        return kInfinity;
+      }
+    }
+    if (irregular) break;
+  }
+  if (!irregular) return bound;
+
   for (int t : patch) {
     const Triangle& f = mesh.triangles[t];
     for (int k = 0; k < 3; ++k) {
@@ -329,7 +412,7 @@ double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh&
 /// An upper bound of max_{x in piece} d(x, target): the cascade of the header comment,
 /// stopping at the first bound <= threshold.
 double piece_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh& target,
-                         double threshold) {
+                         const std::vector<int>& neighbours, double threshold) {
   const double corner_max = std::max({c[0].distance, c[1].distance, c[2].distance});
   if (c[0].nearest == c[1].nearest && c[1].nearest == c[2].nearest) return corner_max;
 
@@ -389,7 +472,7 @@ double piece_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh& targ
   // cost: worth it only where the Lipschitz radius is large against the remaining slack.
   const double radius = std::max({regions.radius[0], regions.radius[1], regions.radius[2]});
   if (radius <= 2.0 * (threshold - corner_max)) return best;
-  return std::min(best, projection_upper_bound(c, target, threshold));
+  return std::min(best, projection_upper_bound(c, target, neighbours, threshold));
 }
 
 void validate_mesh(const TriangleMesh& mesh, const char* name) {
@@ -427,6 +510,11 @@ class BranchAndBound {
   double threshold() const;
   bool rejected() const { return mode_ == Mode::decision && lower_ > tolerance_; }
   void offer_lower(const Corner& corner, int side, int source_triangle);
+  // Bounds whole subtrees of the source trees by one corner's distance plus the farthest
+  // point of the subtree's box from it (d(., B) is 1-Lipschitz); marks the triangles of the
+  // subtrees that this does not settle as active.
+  // With stop_at_reject, returns as soon as a corner is farther than tau.
+  void cull_subtrees(bool stop_at_reject);
   void evaluate_vertices();
   // Splits `piece` into children with bounds for `threshold`; returns the queries made.
   std::size_t split(const Piece& piece, double threshold, std::vector<Piece>& children) const;
@@ -438,6 +526,8 @@ class BranchAndBound {
   BoundedHausdorffOptions options_;
 
   std::vector<std::vector<Corner>> vertex_corners_;  // per direction, per source vertex
+  std::vector<std::vector<int>> neighbours_;         // per direction, edge_neighbours(target)
+  std::vector<std::vector<char>> active_;  // per direction, per source triangle: not settled yet
   PieceQueue queue_;
   double lower_ = 0.0;
   HausdorffWitness witness_;
@@ -463,13 +553,72 @@ Corner BranchAndBound::query(int side, const Vec3& point, std::span<const int> c
   return {point, hit.distance, hit.triangle};
 }
 
+void BranchAndBound::cull_subtrees(bool stop_at_reject) {
+  active_.resize(directions_.size());
+  for (std::size_t side = 0; side < directions_.size(); ++side) {
+    const TriangleMesh& source = *directions_[side].source;
+    const TriangleBvh* tree = directions_[side].source_tree;
+    std::vector<char>& active = active_[side];
+    if (!tree) {
+      active.assign(source.triangles.size(), 1);
+      continue;
+    }
+    active.assign(source.triangles.size(), 0);
+    // Level by level, so that the result does not depend on the thread count.
+    std::vector<BvhSubtree> level = {tree->root()}, next;
+    std::vector<Corner> probes;
+    while (!level.empty()) {
+      probes.assign(level.size(), Corner{Vec3::Zero(), 0.0, -1});
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size(), 16),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                            if (level[i].slot_count <= kSmallSubtree) continue;
+                            const int t = tree->triangle_at_slot(level[i].first_slot);
+                            probes[i] = query(static_cast<int>(side),
+                                              source.vertices[source.triangles[t][0]], {});
+                          }
+                        });
+      for (std::size_t i = 0; i < level.size(); ++i) {
+        const BvhSubtree& subtree = level[i];
+        if (subtree.slot_count <= kSmallSubtree) {
+          for (int s = subtree.first_slot; s < subtree.first_slot + subtree.slot_count; ++s) {
+            active[tree->triangle_at_slot(s)] = 1;
+          }
+          continue;
+        }
+        ++evaluations_;
+        offer_lower(probes[i], static_cast<int>(side), tree->triangle_at_slot(subtree.first_slot));
+      }
+      if (stop_at_reject && rejected()) return;
+      const double level_threshold = threshold();
+      next.clear();
+      for (std::size_t i = 0; i < level.size(); ++i) {
+        const BvhSubtree& subtree = level[i];
+        if (subtree.slot_count <= kSmallSubtree) continue;
+        const Vec3& p = probes[i].point;
+        const Vec3 far = (p - subtree.box.min).cwiseAbs().cwiseMax((subtree.box.max - p).cwiseAbs());
+        const double bound = probes[i].distance + far.norm();
+        if (bound <= level_threshold) {
+          settled_upper_ = std::max(settled_upper_, bound);
+          continue;
+        }
+        for (const BvhSubtree& child : tree->children(subtree)) {
+          if (child.slot_count > 0) next.push_back(child);
+        }
+      }
+      level.swap(next);
+    }
+  }
+}
+
 void BranchAndBound::evaluate_vertices() {
   vertex_corners_.resize(directions_.size());
   for (std::size_t side = 0; side < directions_.size(); ++side) {
     const TriangleMesh& source = *directions_[side].source;
     std::vector<char> used(source.vertices.size(), 0);
-    for (const Triangle& t : source.triangles) {
-      for (int v : t) used[v] = 1;
+    for (std::size_t f = 0; f < source.triangles.size(); ++f) {
+      if (!active_[side][f]) continue;
+      for (int v : source.triangles[f]) used[v] = 1;
     }
     std::vector<Corner>& corners = vertex_corners_[side];
     corners.assign(source.vertices.size(), Corner{Vec3::Zero(), 0.0, -1});
@@ -485,6 +634,7 @@ void BranchAndBound::evaluate_vertices() {
                         }
                       });
     for (std::size_t f = 0; f < source.triangles.size(); ++f) {
+      if (!active_[side][f]) continue;
       for (int v : source.triangles[f]) {
         offer_lower(corners[v], static_cast<int>(side), static_cast<int>(f));
       }
@@ -503,7 +653,7 @@ std::size_t BranchAndBound::split(const Piece& piece, double threshold,
   };
   auto add = [&](const Corner& x, const Corner& y, const Corner& z) {
     Piece child{{x, y, z}, 0.0, piece.side, piece.source_triangle, piece.depth + 1};
-    child.upper = piece_upper_bound(child.corners, target, threshold);
+    child.upper = piece_upper_bound(child.corners, target, neighbours_[piece.side], threshold);
     children.push_back(child);
   };
   if (options_.split == PieceSplit::midpoints) {
@@ -531,8 +681,13 @@ std::size_t BranchAndBound::split(const Piece& piece, double threshold,
 }
 
 HausdorffResult BranchAndBound::run() {
-  evaluate_vertices();
+  neighbours_.resize(directions_.size());
+  for (std::size_t side = 0; side < directions_.size(); ++side) {
+    neighbours_[side] = edge_neighbours(directions_[side].target->mesh());
+  }
   const bool stop_at_reject = mode_ == Mode::decision && !options_.locate_maximum;
+  cull_subtrees(stop_at_reject);
+  if (!(stop_at_reject && rejected())) evaluate_vertices();
 
   if (!(stop_at_reject && rejected())) {
     // Bounds of every input triangle, in parallel; then the undecided ones are queued.
@@ -541,6 +696,7 @@ HausdorffResult BranchAndBound::run() {
       const TriangleMesh& source = *directions_[side].source;
       const std::vector<Corner>& corners = vertex_corners_[side];
       for (std::size_t f = 0; f < source.triangles.size(); ++f) {
+        if (!active_[side][f]) continue;
         const Triangle& t = source.triangles[f];
         pieces.push_back({{corners[t[0]], corners[t[1]], corners[t[2]]},
                           0.0,
@@ -553,9 +709,9 @@ HausdorffResult BranchAndBound::run() {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pieces.size(), 64),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         for (std::size_t p = range.begin(); p != range.end(); ++p) {
-                          pieces[p].upper = piece_upper_bound(pieces[p].corners,
-                                                              *directions_[pieces[p].side].target,
-                                                              initial_threshold);
+                          pieces[p].upper = piece_upper_bound(
+                              pieces[p].corners, *directions_[pieces[p].side].target,
+                              neighbours_[pieces[p].side], initial_threshold);
                         }
                       });
     for (Piece& piece : pieces) {
@@ -647,7 +803,8 @@ void validate_options(const BoundedHausdorffOptions& options) {
 HausdorffResult two_sided(const TriangleBvh& a, const TriangleBvh& b, Mode mode, double tolerance,
                           const BoundedHausdorffOptions& options) {
   validate_options(options);
-  return BranchAndBound({{&a.mesh(), &b}, {&b.mesh(), &a}}, mode, tolerance, options).run();
+  return BranchAndBound({{&a.mesh(), &b, &a}, {&b.mesh(), &a, &b}}, mode, tolerance, options)
+      .run();
 }
 
 HausdorffResult two_sided(const TriangleMesh& a, const TriangleMesh& b, Mode mode, double tolerance,

@@ -174,5 +174,59 @@ TEST(Aabb, SquaredDistance) {
   EXPECT_DOUBLE_EQ(box.squared_distance(Vec3(-1, 4, 3)), 1.0 + 4.0);
 }
 
+TEST(TriangleBvh, SubtreesPartitionTheTrianglesInsideTheirBoxes) {
+  for (int count : {1, 2, 5, 300}) {
+    const TriangleMesh mesh = random_soup(count, 7u + static_cast<unsigned>(count));
+    const TriangleBvh bvh(mesh);
+    const BvhSubtree root = bvh.root();
+    EXPECT_EQ(root.first_slot, 0);
+    EXPECT_EQ(root.slot_count, count);
+    std::vector<int> seen(count, 0);
+    std::vector<BvhSubtree> pending = {root};
+    while (!pending.empty()) {
+      const BvhSubtree subtree = pending.back();
+      pending.pop_back();
+      for (int s = subtree.first_slot; s < subtree.first_slot + subtree.slot_count; ++s) {
+        const Triangle& t = mesh.triangles[bvh.triangle_at_slot(s)];
+        for (int v : t) {
+          EXPECT_TRUE((mesh.vertices[v].array() >= subtree.box.min.array()).all());
+          EXPECT_TRUE((mesh.vertices[v].array() <= subtree.box.max.array()).all());
+        }
+      }
+      if (subtree.node < 0) {
+        for (int s = subtree.first_slot; s < subtree.first_slot + subtree.slot_count; ++s) {
+          ++seen[bvh.triangle_at_slot(s)];
+        }
+        continue;
+      }
+      int covered = 0;
+      for (const BvhSubtree& child : bvh.children(subtree)) {
+        if (child.slot_count == 0) continue;
+        EXPECT_GE(child.first_slot, subtree.first_slot);
+        EXPECT_LE(child.first_slot + child.slot_count, subtree.first_slot + subtree.slot_count);
+        covered += child.slot_count;
+        pending.push_back(child);
+      }
+      EXPECT_EQ(covered, subtree.slot_count);
+    }
+    for (int t = 0; t < count; ++t) EXPECT_EQ(seen[t], 1) << "triangle " << t;
+  }
+}
+
+TEST(TriangleBvh, LimitedBoxQueryGivesUpOnlyAboveTheLimit) {
+  const TriangleBvh bvh(random_soup(200, 3u));
+  Aabb box;
+  box.extend(Vec3(-0.5, -0.5, -0.5));
+  box.extend(Vec3(0.5, 0.5, 0.5));
+  std::vector<int> all;
+  bvh.triangles_meeting(box, all);
+  ASSERT_GT(all.size(), 2u);
+  std::vector<int> limited;
+  EXPECT_TRUE(bvh.triangles_meeting(box, limited, all.size()));
+  EXPECT_EQ(limited.size(), all.size());
+  limited.clear();
+  EXPECT_FALSE(bvh.triangles_meeting(box, limited, all.size() - 1));
+}
+
 }  // namespace
 }  // namespace papercraft
