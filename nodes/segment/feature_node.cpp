@@ -21,16 +21,19 @@ void register_segment_feature(Registry& registry) {
         {"min_area_fraction", ParamType::Number, "0.01",
          "regions smaller than this fraction of the area join a neighbour"},
         {"close_gap_fraction", ParamType::Number, "0.05",
-         "feature chains whose ends are this close (of the bounding-box diagonal) are closed"}},
+         "feature chains whose ends are this close (of the bounding-box diagonal) are closed"},
+        {"parts_ply", ParamType::Boolean, "true",
+         "write the parts, faces coloured by part, to <output>/parts.ply"}},
        [](const Params& params) {
          FeatureSegmentOptions options;
          options.angle_degrees = params.number("angle_degrees");
          options.min_area_fraction = params.number("min_area_fraction");
          options.close_gap_fraction = params.number("close_gap_fraction");
-         return make_body([options](const Envelope& in, Emitter& out) {
+         const bool parts_ply = params.boolean("parts_ply");
+                  return make_body([options, parts_ply](const Envelope& in, Emitter& out) {
            Mesh mesh = *in.get<Model>().mesh;
            tag_input_vertices(mesh);
-           emit_parts(in, out, segment_feature(mesh, options));
+           emit_parts(in, out, segment_feature(mesh, options), parts_ply);
          });
        }});
 }

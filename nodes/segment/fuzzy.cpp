@@ -14,6 +14,7 @@
 #include "nodes/segment/face_regions.h"
 #include "nodes/segment/labelled_surface.h"
 #include "nodes/segment/straighten.h"
+#include "nodes/segment/strip_estimate.h"
 
 namespace papercraft {
 namespace {
@@ -390,26 +391,53 @@ class Hierarchy {
         min_area_(options.min_area_fraction * graph.total_area) {}
 
   // Leaf regions of `faces` (sorted model faces, connected), in a deterministic order.
-  std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth) const {
+  // `cost` is the estimated strip count of `faces` if already known (< 0: not yet).
+  std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth,
+                                       int cost = -1) const {
     if (!may_split(faces, depth)) return {faces};
     const RegionGraph region = region_graph(graph_, faces, options_);
     std::vector<int> label(graph_.areas.size(), -1);
     const std::vector<int> local_label = decompose(region, graph_, options_);
     for (int i = 0; i < region.size(); ++i) label[faces[i]] = local_label[i];
     label = consolidate_regions(graph_, label, min_area_);
+    std::vector<std::vector<std::vector<int>>> candidates;
     if (options_.parts == 0) {
+      if (judge_by_strips()) candidates.push_back(groups(faces, label));
       merge_weak_boundaries(faces, label);
       label = consolidate_regions(graph_, label, min_area_);
     }
+    candidates.push_back(groups(faces, label));
     std::vector<std::vector<int>> children;
-    for (int f : faces) {
-      if (label[f] >= static_cast<int>(children.size())) children.resize(label[f] + 1);
-      children[label[f]].push_back(f);
+    std::vector<int> child_costs;
+    if (judge_by_strips()) {
+      // Keep the decomposition (with or without its weak boundaries) that the refinement makes
+      // the fewest strips of, and none unless it makes fewer than the whole region.
+      if (cost < 0) cost = strips_of(faces, std::numeric_limits<int>::max() / 2);
+      int best = cost;
+      for (const auto& candidate : candidates) {
+        if (candidate.size() < 2 || candidate == children) continue;
+        std::vector<int> costs;
+        int sum = 0;
+        for (const auto& group : candidate) {
+          costs.push_back(strips_of(group, best - sum - 1));
+          sum += costs.back();
+          if (sum >= best) break;
+        }
+        if (sum < best) {
+          best = sum;
+          children = candidate;
+          child_costs = costs;
+        }
+      }
+    } else {
+      children = candidates.back();
+      child_costs.assign(children.size(), -1);
     }
     if (children.size() < 2) return {faces};
     std::vector<std::vector<std::vector<int>>> results(children.size());
-    tbb::parallel_for(std::size_t{0}, children.size(),
-                      [&](std::size_t c) { results[c] = leaves(children[c], depth + 1); });
+    tbb::parallel_for(std::size_t{0}, children.size(), [&](std::size_t c) {
+      results[c] = leaves(children[c], depth + 1, child_costs[c]);
+    });
     std::vector<std::vector<int>> all;
     for (auto& result : results)
       for (auto& leaf : result) all.push_back(std::move(leaf));
@@ -417,6 +445,47 @@ class Hierarchy {
   }
 
  private:
+  bool judge_by_strips() const { return options_.strip_tolerance > 0; }
+
+  // The faces of each label, labels in order of first appearance in `faces`.
+  static std::vector<std::vector<int>> groups(const std::vector<int>& faces,
+                                              const std::vector<int>& label) {
+    std::map<int, int> index;
+    std::vector<std::vector<int>> result;
+    for (int f : faces) {
+      auto [it, inserted] = index.emplace(label[f], static_cast<int>(result.size()));
+      if (inserted) result.emplace_back();
+      result[it->second].push_back(f);
+    }
+    return result;
+  }
+
+  // Estimated strips of the region `faces` (its boundaries as they are, not straightened),
+  // counting no further than cap + 1.
+  int strips_of(const std::vector<int>& faces, int cap) const {
+    if (cap < 1) return cap + 1;  // every region makes a strip
+    std::vector<int> label(graph_.areas.size(), -1);
+    for (int f : faces) label[f] = 0;
+    LabelledSurface surface = labelled_surface(mesh_, label);
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+      if (surface.labels[t] < 0) continue;
+      surface.triangles[kept] = surface.triangles[t];
+      surface.origin_face[kept] = surface.origin_face[t];
+      surface.labels[kept] = surface.labels[t];
+      ++kept;
+    }
+    surface.triangles.resize(kept);
+    surface.origin_face.resize(kept);
+    surface.labels.resize(kept);
+    int strips = 0;
+    for (const Mesh& part : parts_of(surface)) {
+      strips += estimate_strips(part, options_.strip_tolerance, cap - strips);
+      if (strips > cap) return cap + 1;
+    }
+    return strips;
+  }
+
   bool may_split(const std::vector<int>& faces, int depth) const {
     if (faces.size() < 4) return false;
     if (options_.parts > 0) return depth == 0;
@@ -512,6 +581,8 @@ void validate(const FuzzySegmentOptions& options) {
     fail("min_area_fraction must be in [0, 1), got " + std::to_string(options.min_area_fraction));
   if (!(options.neck_ratio > 0 && std::isfinite(options.neck_ratio)))
     fail("neck_ratio must be > 0, got " + std::to_string(options.neck_ratio));
+  if (!(options.strip_tolerance >= 0 && std::isfinite(options.strip_tolerance)))
+    fail("strip_tolerance must be >= 0, got " + std::to_string(options.strip_tolerance));
   if (!(options.straighten_width > 0 && std::isfinite(options.straighten_width)))
     fail("straighten_width must be > 0, got " + std::to_string(options.straighten_width));
 }
