@@ -391,73 +391,18 @@ class Hierarchy {
         min_area_(options.min_area_fraction * graph.total_area) {}
 
   // Leaf regions of `faces` (sorted model faces, connected), in a deterministic order.
-  // `cost` is the estimated strip count of `faces` if already known (< 0: not yet).
-  std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth,
-                                       int cost = -1) const {
-    if (!may_split(faces, depth)) return {faces};
-    const RegionGraph region = region_graph(graph_, faces, options_);
-    std::vector<int> label(graph_.areas.size(), -1);
-    const std::vector<int> local_label = decompose(region, graph_, options_);
-    for (int i = 0; i < region.size(); ++i) label[faces[i]] = local_label[i];
-    label = consolidate_regions(graph_, label, min_area_);
-    std::vector<std::vector<std::vector<int>>> candidates;
-    if (options_.parts == 0) {
-      if (judge_by_strips()) candidates.push_back(groups(faces, label));
-      merge_weak_boundaries(faces, label);
-      label = consolidate_regions(graph_, label, min_area_);
-    }
-    candidates.push_back(groups(faces, label));
-    std::vector<std::vector<int>> children;
-    std::vector<int> child_costs;
-    if (judge_by_strips()) {
-      // Keep the decomposition (with or without its weak boundaries) that the refinement makes
-      // the fewest strips of, and none unless it makes fewer than the whole region.
-      if (cost < 0) cost = strips_of(faces, std::numeric_limits<int>::max() / 2);
-      int best = cost;
-      for (const auto& candidate : candidates) {
-        if (candidate.size() < 2 || candidate == children) continue;
-        std::vector<int> costs;
-        int sum = 0;
-        for (const auto& group : candidate) {
-          costs.push_back(strips_of(group, best - sum - 1));
-          sum += costs.back();
-          if (sum >= best) break;
-        }
-        if (sum < best) {
-          best = sum;
-          children = candidate;
-          child_costs = costs;
-        }
-      }
-    } else {
-      children = candidates.back();
-      child_costs.assign(children.size(), -1);
-    }
-    if (children.size() < 2) return {faces};
+  std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth) const {
+    if (judge_by_strips()) return cheapest(faces, depth, std::numeric_limits<int>::max() / 2).leaves;
+    const std::vector<std::vector<std::vector<int>>> candidates = decompositions(faces, depth);
+    if (candidates.empty()) return {faces};
+    const std::vector<std::vector<int>>& children = candidates.back();
     std::vector<std::vector<std::vector<int>>> results(children.size());
-    tbb::parallel_for(std::size_t{0}, children.size(), [&](std::size_t c) {
-      results[c] = leaves(children[c], depth + 1, child_costs[c]);
-    });
+    tbb::parallel_for(std::size_t{0}, children.size(),
+                      [&](std::size_t c) { results[c] = leaves(children[c], depth + 1); });
     std::vector<std::vector<int>> all;
     for (auto& result : results)
       for (auto& leaf : result) all.push_back(std::move(leaf));
     return all;
-  }
-
- private:
-  bool judge_by_strips() const { return options_.strip_tolerance > 0; }
-
-  // The faces of each label, labels in order of first appearance in `faces`.
-  static std::vector<std::vector<int>> groups(const std::vector<int>& faces,
-                                              const std::vector<int>& label) {
-    std::map<int, int> index;
-    std::vector<std::vector<int>> result;
-    for (int f : faces) {
-      auto [it, inserted] = index.emplace(label[f], static_cast<int>(result.size()));
-      if (inserted) result.emplace_back();
-      result[it->second].push_back(f);
-    }
-    return result;
   }
 
   // Estimated strips of the region `faces` (its boundaries as they are, not straightened),
@@ -478,13 +423,85 @@ class Hierarchy {
     surface.triangles.resize(kept);
     surface.origin_face.resize(kept);
     surface.labels.resize(kept);
+    return strips_of(parts_of(surface), cap);
+  }
+
+  int strips_of(const std::vector<Mesh>& parts, int cap) const {
     int strips = 0;
-    for (const Mesh& part : parts_of(surface)) {
+    for (const Mesh& part : parts) {
+      if (cap - strips < 1) return cap + 1;
       strips += estimate_strips(part, options_.strip_tolerance, cap - strips);
       if (strips > cap) return cap + 1;
     }
     return strips;
   }
+
+ private:
+  struct Choice {
+    std::vector<std::vector<int>> leaves;
+    int cost = 0;  // estimated strips; above the cap when it was exceeded
+  };
+
+  // The candidate decompositions of a region one level down (each a list of face groups with
+  // at least two), the rule's choice last; none if the region is not to be split.
+  std::vector<std::vector<std::vector<int>>> decompositions(const std::vector<int>& faces,
+                                                            int depth) const {
+    if (!may_split(faces, depth)) return {};
+    const RegionGraph region = region_graph(graph_, faces, options_);
+    std::vector<int> label(graph_.areas.size(), -1);
+    const std::vector<int> local_label = decompose(region, graph_, options_);
+    for (int i = 0; i < region.size(); ++i) label[faces[i]] = local_label[i];
+    label = consolidate_regions(graph_, label, min_area_);
+    std::vector<std::vector<std::vector<int>>> candidates;
+    auto add = [&](std::vector<std::vector<int>> candidate) {
+      if (candidate.size() < 2) return;
+      if (std::find(candidates.begin(), candidates.end(), candidate) != candidates.end()) return;
+      candidates.push_back(std::move(candidate));
+    };
+    if (options_.parts == 0) {
+      if (judge_by_strips()) add(groups(faces, label));
+      merge_weak_boundaries(faces, label);
+      label = consolidate_regions(graph_, label, min_area_);
+    }
+    add(groups(faces, label));
+    return candidates;
+  }
+
+  // The leaves of `faces` that the refinement makes the fewest strips of: the region whole, or
+  // one of its decompositions with each part's own cheapest leaves. Ties keep fewer parts. Only
+  // costs up to `cap` are told apart.
+  Choice cheapest(const std::vector<int>& faces, int depth, int cap) const {
+    Choice best{{faces}, strips_of(faces, cap)};
+    if (best.cost <= 1) return best;
+    for (const auto& candidate : decompositions(faces, depth)) {
+      Choice split;
+      const int bound = std::min(best.cost, cap + 1);  // to beat
+      for (const auto& group : candidate) {
+        Choice child = cheapest(group, depth + 1, bound - split.cost - 1);
+        split.cost += child.cost;
+        if (split.cost >= bound) break;
+        for (auto& leaf : child.leaves) split.leaves.push_back(std::move(leaf));
+      }
+      if (split.cost < bound) best = std::move(split);
+    }
+    return best;
+  }
+
+  bool judge_by_strips() const { return options_.strip_tolerance > 0; }
+
+  // The faces of each label, labels in order of first appearance in `faces`.
+  static std::vector<std::vector<int>> groups(const std::vector<int>& faces,
+                                              const std::vector<int>& label) {
+    std::map<int, int> index;
+    std::vector<std::vector<int>> result;
+    for (int f : faces) {
+      auto [it, inserted] = index.emplace(label[f], static_cast<int>(result.size()));
+      if (inserted) result.emplace_back();
+      result[it->second].push_back(f);
+    }
+    return result;
+  }
+
 
   bool may_split(const std::vector<int>& faces, int depth) const {
     if (faces.size() < 4) return false;
@@ -610,10 +627,30 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
   }
   labels = consolidate_regions(graph, labels, options.min_area_fraction * graph.total_area);
   LabelledSurface surface = labelled_surface(mesh, labels);
+  if (options.strip_tolerance <= 0 || next_label <= static_cast<int>(components.size())) {
+    if (options.straighten) {
+      straighten_boundaries(surface, {options.straighten_width * graph.mean_edge_length});
+    }
+    return parts_of(surface);
+  }
+  // The regions were judged on meshes cut out one at a time and before straightening: judge
+  // the parts as they will be emitted, straightened or not, against the model whole.
+  constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
+  std::vector<Mesh> best = parts_of(surface);
+  int best_cost = hierarchy.strips_of(best, kUnbounded);
   if (options.straighten) {
     straighten_boundaries(surface, {options.straighten_width * graph.mean_edge_length});
+    std::vector<Mesh> straightened = parts_of(surface);
+    const int cost = hierarchy.strips_of(straightened, best_cost);
+    if (cost <= best_cost) {
+      best = std::move(straightened);
+      best_cost = cost;
+    }
   }
-  return parts_of(surface);
+  std::vector<int> component_labels = component;
+  std::vector<Mesh> whole = parts_of(labelled_surface(mesh, component_labels));
+  if (hierarchy.strips_of(whole, best_cost) <= best_cost) return whole;
+  return best;
 }
 
 }  // namespace papercraft

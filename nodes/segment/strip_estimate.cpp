@@ -19,6 +19,13 @@ constexpr long kSearchMaxFaces = 4000;
 // Mirrors cut.harmonic's max_depth.
 constexpr int kMaxDepth = 64;
 
+// cut.harmonic's defaults (its positive_weights param is true; the library default is false).
+WitnessCutOptions cut_options() {
+  WitnessCutOptions options;
+  options.harmonic.clamp_negative_weights = true;
+  return options;
+}
+
 }  // namespace
 
 int estimate_strips(const Mesh& root, double tolerance, int cap) {
@@ -26,6 +33,9 @@ int estimate_strips(const Mesh& root, double tolerance, int cap) {
     Mesh part;
     int depth;
   };
+  const WitnessCutOptions cut_defaults = cut_options();
+  MaximalStripOptions search;
+  search.cut = cut_defaults;
   std::vector<Item> stack;
   stack.push_back({root, 0});
   int strips = 0;
@@ -61,12 +71,14 @@ int estimate_strips(const Mesh& root, double tolerance, int cap) {
       WitnessCut cut;
       if (verdict.hole < 0 && static_cast<long>(part.n_faces()) <= kSearchMaxFaces) {
         cut = cut_maximal_strip(part, selection.first, selection.first_closed, selection.second,
-                                selection.second_closed, tolerance, MaximalStripOptions{});
+                                selection.second_closed, tolerance, search);
       }
       if (cut.pieces.empty()) {
         cut = verdict.hole >= 0
-                  ? cut_through_hole(part, selection.first, selection.second, holes[verdict.hole])
-                  : cut_through_witness(part, selection.first, selection.second, verdict.witness);
+                  ? cut_through_hole(part, selection.first, selection.second, holes[verdict.hole],
+                                     cut_defaults)
+                  : cut_through_witness(part, selection.first, selection.second, verdict.witness,
+                                        cut_defaults);
       }
       if (cut.pieces.empty()) return cap + 1;
       // Every piece makes at least one strip.
