@@ -405,6 +405,30 @@ class Hierarchy {
     return all;
   }
 
+  // The connected pieces (through arcs) of each label of `faces`, in order of lowest face.
+  std::vector<std::vector<int>> connected_groups(const std::vector<int>& faces,
+                                                 const std::vector<int>& label) const {
+    std::map<int, int> seen;  // face -> group
+    std::vector<std::vector<int>> result;
+    for (int seed : faces) {
+      if (seen.count(seed)) continue;
+      const int group = static_cast<int>(result.size());
+      result.push_back({seed});
+      seen[seed] = group;
+      for (std::size_t i = 0; i < result[group].size(); ++i) {
+        const int f = result[group][i];
+        for (int a : graph_.face_arcs[f]) {
+          const int g = graph_.other_face(a, f);
+          if (label[g] != label[f] || seen.count(g)) continue;
+          seen[g] = group;
+          result[group].push_back(g);
+        }
+      }
+      std::sort(result[group].begin(), result[group].end());
+    }
+    return result;
+  }
+
   // Estimated strips of the region `faces` (its boundaries as they are, not straightened),
   // counting no further than cap + 1.
   int strips_of(const std::vector<int>& faces, int cap) const {
@@ -464,6 +488,29 @@ class Hierarchy {
       label = consolidate_regions(graph_, label, min_area_);
     }
     add(groups(faces, label));
+    if (options_.parts == 0 && judge_by_strips() && options_.single_part_candidates) {
+      // Also each part of those decompositions alone, the rest of the region left whole
+      // (one piece per connected remainder).
+      const std::size_t decompositions = candidates.size();
+      for (std::size_t c = 0; c < decompositions; ++c) {
+        if (candidates[c].size() < 3) continue;
+        const std::vector<std::vector<int>> parts = candidates[c];
+        for (const auto& part : parts) {
+          for (int f : faces) label[f] = 1;
+          for (int f : part) label[f] = 0;
+          add(connected_groups(faces, label));
+        }
+      }
+    }
+    if (options_.parts == 0 && judge_by_strips() && options_.two_way_candidate) {
+      // Also the two-way split between the region's farthest faces.
+      FuzzySegmentOptions two = options_;
+      two.parts = 2;
+      std::vector<int> split(graph_.areas.size(), -1);
+      const std::vector<int> local_split = decompose(region, graph_, two);
+      for (int i = 0; i < region.size(); ++i) split[faces[i]] = local_split[i];
+      add(groups(faces, consolidate_regions(graph_, split, min_area_)));
+    }
     return candidates;
   }
 

@@ -58,6 +58,12 @@ struct FuzzySegmentOptions {
   /// is kept, none unless it makes fewer strips than the region whole. 0 turns this off.
   /// The segment.fuzzy node sets it to the model's tolerance (param strip_estimate).
   double strip_tolerance = 0;
+  /// With strip_tolerance > 0, also judge the two-way split between each region's farthest
+  /// faces (Katz & Tal's two-part decomposition) at every level.
+  bool two_way_candidate = true;
+  /// With strip_tolerance > 0, also judge each part of a decomposition of three or more
+  /// parts split off alone (the rest of the region whole).
+  bool single_part_candidates = true;
   /// Replace each boundary by the 1/2 iso-line of a harmonic field between the two sides,
   /// within straighten_width mean edge lengths of it (a smooth curve across the triangles
   /// instead of a staircase of edges). A boundary that runs along a crease (the surface folds

@@ -37,6 +37,10 @@ void register_segment_fuzzy(Registry& registry) {
                  {"strip_estimate", ParamType::Boolean, "true",
                   "keep a decomposition only if the refinement makes fewer strips of its parts "
                   "(estimated at the model's tolerance)"},
+                 {"two_way_candidate", ParamType::Boolean, "true",
+                  "with strip_estimate, also judge each region's two-way farthest-faces split"},
+                 {"single_part_candidates", ParamType::Boolean, "true",
+                  "with strip_estimate, also judge each part of a decomposition split off alone"},
                  {"parts_ply", ParamType::Boolean, "true",
                   "write the parts, faces coloured by part, to <output>/parts.ply"}},
                 [](const Params& params) {
@@ -51,6 +55,8 @@ void register_segment_fuzzy(Registry& registry) {
                   options.crease_angle_degrees = params.number("crease_angle_degrees");
                   options.straighten_width = params.number("straighten_width");
                   options.straighten = params.boolean("straighten");
+                  options.two_way_candidate = params.boolean("two_way_candidate");
+                  options.single_part_candidates = params.boolean("single_part_candidates");
                   options.min_area_fraction = params.number("min_area_fraction");
                   const bool parts_ply = params.boolean("parts_ply");
                   const bool strip_estimate = params.boolean("strip_estimate");
