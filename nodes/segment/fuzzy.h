@@ -25,7 +25,7 @@ struct FuzzySegmentOptions {
   int max_parts = 10;
   /// Levels of the hierarchy when parts == 0, >= 1: each part of a level is decomposed again
   /// unless it is smaller than twice the minimum area or at this depth.
-  int max_depth = 2;
+  int max_depth = 3;
   /// Weight of the angular term in the dual-graph distance, 1 - delta of Katz & Tal eq. (1);
   /// the geodesic term gets the rest. In [0, 1].
   double angular_weight = 0.8;

@@ -1,7 +1,7 @@
 // segment.fuzzy — hierarchical fuzzy clustering with minimum cuts (Katz & Tal 2003), the
 // boundaries straightened along harmonic iso-lines.
 //
-//   segment: {impl: segment.fuzzy, params: {parts: 0, max_depth: 2}, to: [select]}
+//   segment: {impl: segment.fuzzy, params: {parts: 0, max_depth: 3}, to: [select]}
 
 #include "graph/registry.h"
 #include "nodes/segment/emit_parts.h"
@@ -18,7 +18,7 @@ void register_segment_fuzzy(Registry& registry) {
                 {{"out", MessageType::of<Part>()}},
                 {{"parts", ParamType::Integer, "0", "parts per level; 0 chooses automatically"},
                  {"max_parts", ParamType::Integer, "10", "upper bound when choosing automatically"},
-                 {"max_depth", ParamType::Integer, "2", "levels of the hierarchy"},
+                 {"max_depth", ParamType::Integer, "3", "levels of the hierarchy"},
                  {"angular_weight", ParamType::Number, "0.8",
                   "weight of the angular term in the dual-graph distance (1 - delta of Katz-Tal)"},
                  {"fuzzy_epsilon", ParamType::Number, "0.1", "width of the fuzzy region"},
