@@ -14,6 +14,7 @@
 #   --tolerances "T..."   tolerances to run (default "1% 2% 5%")
 #   --timeout S           per-run wall-clock limit in seconds (default 120)
 #   --threads N           --threads of each run (default 1)
+#   --config FILE         pipeline config of each run (-c FILE; default: the built-in one)
 #   --meshes DIR          folder of meshes when none are given (default: bench/cgal_meshes.sh)
 #   --glob PATTERN        file names taken from --meshes (default "*.off")
 #   --max-faces N         skip meshes with more faces (from the file header; OFF only)
@@ -41,6 +42,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 tolerances="1% 2% 5%"
 timeout_s=120
 threads=1
+config_args=()
 meshes_dir=""
 glob="*.off"
 max_faces=""
@@ -64,6 +66,7 @@ while [[ $# -gt 0 ]]; do
     --tolerances) tolerances=$2; shift 2 ;;
     --timeout) timeout_s=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
+    --config) config_args=(-c "$2"); shift 2 ;;
     --meshes) meshes_dir=$2; shift 2 ;;
     --glob) glob=$2; shift 2 ;;
     --max-faces) max_faces=$2; shift 2 ;;
@@ -129,7 +132,7 @@ if [[ -n $speedup ]]; then
     for t in $speedup_threads; do
       out=$dir/t$t-r$r
       timed_run "$out.time" "$out.log" run "${copies_list[@]}" --tolerance "$speedup_tolerance" \
-        --threads "$t" --out "$out" -q
+        "${config_args[@]}" --threads "$t" --out "$out" -q
       printf '%s\t%s\t%s\t%s\t%s\n' "$t" "$r" "$run_rc" "$out.time" "$out/batch.json" >>"$results"
       rm -rf "$out"/"${stem}"_*/
     done
@@ -240,7 +243,8 @@ for entry in "${ordered[@]}"; do
       continue
     fi
     rm -rf "$out"; mkdir -p "$out"
-    timed_run "$out/time.txt" "$out/log.txt" run "$mesh" --tolerance "$tol" --threads "$threads" \
+    timed_run "$out/time.txt" "$out/log.txt" run "$mesh" "${config_args[@]}" \
+      --tolerance "$tol" --threads "$threads" \
       --out "$out" -q
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$mesh" "$faces" "$tol" "run" "$run_rc" "$out" "$stem" \
       "$timeout_s" >>"$rows"

@@ -1,17 +1,27 @@
 #pragma once
 // Shared by the segment node adapters: one Part message per segment.
 
+#include <filesystem>
 #include <memory>
 #include <vector>
 
 #include "graph/messages.h"
 #include "graph/model_run.h"
+#include "core/atomic_file.h"
 #include "graph/node.h"
+#include "nodes/segment/parts_ply.h"
 
 namespace papercraft {
 
-inline void emit_parts(const Envelope& in, Emitter& out, std::vector<Mesh> parts) {
+/// Emits the parts; with `write_parts_ply`, first writes them coloured to <output>/parts.ply.
+inline void emit_parts(const Envelope& in, Emitter& out, std::vector<Mesh> parts,
+                       bool write_parts_ply = false) {
   auto model = in.get_shared<Model>();
+  if (write_parts_ply) {
+    const std::filesystem::path dir = in.model->output_dir();
+    std::filesystem::create_directories(dir);
+    write_file_atomic(dir / "parts.ply", parts_ply(parts));
+  }
   in.model->set_result("segments", static_cast<double>(parts.size()));
   for (std::size_t i = 0; i < parts.size(); ++i) {
     Part part;

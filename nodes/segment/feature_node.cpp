@@ -7,6 +7,7 @@
 #include "nodes/segment/emit_parts.h"
 #include "nodes/segment/feature.h"
 #include "nodes/segment/none.h"
+#include "nodes/segment/strip_estimate.h"
 
 namespace papercraft {
 
@@ -21,16 +22,38 @@ void register_segment_feature(Registry& registry) {
         {"min_area_fraction", ParamType::Number, "0.01",
          "regions smaller than this fraction of the area join a neighbour"},
         {"close_gap_fraction", ParamType::Number, "0.05",
-         "feature chains whose ends are this close (of the bounding-box diagonal) are closed"}},
+         "feature chains whose ends are this close (of the bounding-box diagonal) are closed"},
+        {"strip_estimate", ParamType::Boolean, "true",
+         "emit the model whole unless the refinement makes fewer strips of the parts "
+         "(estimated at the model's tolerance)"},
+        {"parts_ply", ParamType::Boolean, "true",
+         "write the parts, faces coloured by part, to <output>/parts.ply"}},
        [](const Params& params) {
          FeatureSegmentOptions options;
          options.angle_degrees = params.number("angle_degrees");
          options.min_area_fraction = params.number("min_area_fraction");
          options.close_gap_fraction = params.number("close_gap_fraction");
-         return make_body([options](const Envelope& in, Emitter& out) {
+         const bool parts_ply = params.boolean("parts_ply");
+         const bool strip_estimate = params.boolean("strip_estimate");
+         return make_body([options, parts_ply, strip_estimate](const Envelope& in, Emitter& out) {
            Mesh mesh = *in.get<Model>().mesh;
            tag_input_vertices(mesh);
-           emit_parts(in, out, segment_feature(mesh, options));
+           std::vector<Mesh> parts = segment_feature(mesh, options);
+           std::vector<Mesh> whole = segment_none(mesh);
+           if (strip_estimate && parts.size() > whole.size()) {
+             // Paper folds along a crease inside a strip as well: a crease is only worth a
+             // boundary if the parts cost fewer strips than the model whole.
+             const double tolerance = in.model->tolerance.load();
+             int whole_strips = 0;
+             for (const Mesh& part : whole) whole_strips += estimate_strips(part, tolerance, 1 << 20);
+             int part_strips = 0;
+             for (const Mesh& part : parts) {
+               part_strips += estimate_strips(part, tolerance, whole_strips - part_strips);
+               if (part_strips > whole_strips) break;
+             }
+             if (part_strips >= whole_strips) parts = std::move(whole);
+           }
+           emit_parts(in, out, std::move(parts), parts_ply);
          });
        }});
 }

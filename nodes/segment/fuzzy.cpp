@@ -14,6 +14,7 @@
 #include "nodes/segment/face_regions.h"
 #include "nodes/segment/labelled_surface.h"
 #include "nodes/segment/straighten.h"
+#include "nodes/segment/strip_estimate.h"
 
 namespace papercraft {
 namespace {
@@ -391,22 +392,10 @@ class Hierarchy {
 
   // Leaf regions of `faces` (sorted model faces, connected), in a deterministic order.
   std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth) const {
-    if (!may_split(faces, depth)) return {faces};
-    const RegionGraph region = region_graph(graph_, faces, options_);
-    std::vector<int> label(graph_.areas.size(), -1);
-    const std::vector<int> local_label = decompose(region, graph_, options_);
-    for (int i = 0; i < region.size(); ++i) label[faces[i]] = local_label[i];
-    label = consolidate_regions(graph_, label, min_area_);
-    if (options_.parts == 0) {
-      merge_weak_boundaries(faces, label);
-      label = consolidate_regions(graph_, label, min_area_);
-    }
-    std::vector<std::vector<int>> children;
-    for (int f : faces) {
-      if (label[f] >= static_cast<int>(children.size())) children.resize(label[f] + 1);
-      children[label[f]].push_back(f);
-    }
-    if (children.size() < 2) return {faces};
+    if (judge_by_strips()) return cheapest(faces, depth, std::numeric_limits<int>::max() / 2).leaves;
+    const std::vector<std::vector<std::vector<int>>> candidates = decompositions(faces, depth);
+    if (candidates.empty()) return {faces};
+    const std::vector<std::vector<int>>& children = candidates.back();
     std::vector<std::vector<std::vector<int>>> results(children.size());
     tbb::parallel_for(std::size_t{0}, children.size(),
                       [&](std::size_t c) { results[c] = leaves(children[c], depth + 1); });
@@ -416,7 +405,151 @@ class Hierarchy {
     return all;
   }
 
+  // The connected pieces (through arcs) of each label of `faces`, in order of lowest face.
+  std::vector<std::vector<int>> connected_groups(const std::vector<int>& faces,
+                                                 const std::vector<int>& label) const {
+    std::map<int, int> seen;  // face -> group
+    std::vector<std::vector<int>> result;
+    for (int seed : faces) {
+      if (seen.count(seed)) continue;
+      const int group = static_cast<int>(result.size());
+      result.push_back({seed});
+      seen[seed] = group;
+      for (std::size_t i = 0; i < result[group].size(); ++i) {
+        const int f = result[group][i];
+        for (int a : graph_.face_arcs[f]) {
+          const int g = graph_.other_face(a, f);
+          if (label[g] != label[f] || seen.count(g)) continue;
+          seen[g] = group;
+          result[group].push_back(g);
+        }
+      }
+      std::sort(result[group].begin(), result[group].end());
+    }
+    return result;
+  }
+
+  // Estimated strips of the region `faces` (its boundaries as they are, not straightened),
+  // counting no further than cap + 1.
+  int strips_of(const std::vector<int>& faces, int cap) const {
+    if (cap < 1) return cap + 1;  // every region makes a strip
+    std::vector<int> label(graph_.areas.size(), -1);
+    for (int f : faces) label[f] = 0;
+    LabelledSurface surface = labelled_surface(mesh_, label);
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+      if (surface.labels[t] < 0) continue;
+      surface.triangles[kept] = surface.triangles[t];
+      surface.origin_face[kept] = surface.origin_face[t];
+      surface.labels[kept] = surface.labels[t];
+      ++kept;
+    }
+    surface.triangles.resize(kept);
+    surface.origin_face.resize(kept);
+    surface.labels.resize(kept);
+    return strips_of(parts_of(surface), cap);
+  }
+
+  int strips_of(const std::vector<Mesh>& parts, int cap) const {
+    int strips = 0;
+    for (const Mesh& part : parts) {
+      if (cap - strips < 1) return cap + 1;
+      strips += estimate_strips(part, options_.strip_tolerance, cap - strips);
+      if (strips > cap) return cap + 1;
+    }
+    return strips;
+  }
+
  private:
+  struct Choice {
+    std::vector<std::vector<int>> leaves;
+    int cost = 0;  // estimated strips; above the cap when it was exceeded
+  };
+
+  // The candidate decompositions of a region one level down (each a list of face groups with
+  // at least two), the rule's choice last; none if the region is not to be split.
+  std::vector<std::vector<std::vector<int>>> decompositions(const std::vector<int>& faces,
+                                                            int depth) const {
+    if (!may_split(faces, depth)) return {};
+    const RegionGraph region = region_graph(graph_, faces, options_);
+    std::vector<int> label(graph_.areas.size(), -1);
+    const std::vector<int> local_label = decompose(region, graph_, options_);
+    for (int i = 0; i < region.size(); ++i) label[faces[i]] = local_label[i];
+    label = consolidate_regions(graph_, label, min_area_);
+    std::vector<std::vector<std::vector<int>>> candidates;
+    auto add = [&](std::vector<std::vector<int>> candidate) {
+      if (candidate.size() < 2) return;
+      if (std::find(candidates.begin(), candidates.end(), candidate) != candidates.end()) return;
+      candidates.push_back(std::move(candidate));
+    };
+    if (options_.parts == 0) {
+      if (judge_by_strips()) add(groups(faces, label));
+      merge_weak_boundaries(faces, label);
+      label = consolidate_regions(graph_, label, min_area_);
+    }
+    add(groups(faces, label));
+    if (options_.parts == 0 && judge_by_strips() && options_.single_part_candidates) {
+      // Also each part of those decompositions alone, the rest of the region left whole
+      // (one piece per connected remainder).
+      const std::size_t decompositions = candidates.size();
+      for (std::size_t c = 0; c < decompositions; ++c) {
+        if (candidates[c].size() < 3) continue;
+        const std::vector<std::vector<int>> parts = candidates[c];
+        for (const auto& part : parts) {
+          for (int f : faces) label[f] = 1;
+          for (int f : part) label[f] = 0;
+          add(connected_groups(faces, label));
+        }
+      }
+    }
+    if (options_.parts == 0 && judge_by_strips() && options_.two_way_candidate) {
+      // Also the two-way split between the region's farthest faces.
+      FuzzySegmentOptions two = options_;
+      two.parts = 2;
+      std::vector<int> split(graph_.areas.size(), -1);
+      const std::vector<int> local_split = decompose(region, graph_, two);
+      for (int i = 0; i < region.size(); ++i) split[faces[i]] = local_split[i];
+      add(groups(faces, consolidate_regions(graph_, split, min_area_)));
+    }
+    return candidates;
+  }
+
+  // The leaves of `faces` that the refinement makes the fewest strips of: the region whole, or
+  // one of its decompositions with each part's own cheapest leaves. Ties keep fewer parts. Only
+  // costs up to `cap` are told apart.
+  Choice cheapest(const std::vector<int>& faces, int depth, int cap) const {
+    Choice best{{faces}, strips_of(faces, cap)};
+    if (best.cost <= 1) return best;
+    for (const auto& candidate : decompositions(faces, depth)) {
+      Choice split;
+      const int bound = std::min(best.cost, cap + 1);  // to beat
+      for (const auto& group : candidate) {
+        Choice child = cheapest(group, depth + 1, bound - split.cost - 1);
+        split.cost += child.cost;
+        if (split.cost >= bound) break;
+        for (auto& leaf : child.leaves) split.leaves.push_back(std::move(leaf));
+      }
+      if (split.cost < bound) best = std::move(split);
+    }
+    return best;
+  }
+
+  bool judge_by_strips() const { return options_.strip_tolerance > 0; }
+
+  // The faces of each label, labels in order of first appearance in `faces`.
+  static std::vector<std::vector<int>> groups(const std::vector<int>& faces,
+                                              const std::vector<int>& label) {
+    std::map<int, int> index;
+    std::vector<std::vector<int>> result;
+    for (int f : faces) {
+      auto [it, inserted] = index.emplace(label[f], static_cast<int>(result.size()));
+      if (inserted) result.emplace_back();
+      result[it->second].push_back(f);
+    }
+    return result;
+  }
+
+
   bool may_split(const std::vector<int>& faces, int depth) const {
     if (faces.size() < 4) return false;
     if (options_.parts > 0) return depth == 0;
@@ -512,6 +645,8 @@ void validate(const FuzzySegmentOptions& options) {
     fail("min_area_fraction must be in [0, 1), got " + std::to_string(options.min_area_fraction));
   if (!(options.neck_ratio > 0 && std::isfinite(options.neck_ratio)))
     fail("neck_ratio must be > 0, got " + std::to_string(options.neck_ratio));
+  if (!(options.strip_tolerance >= 0 && std::isfinite(options.strip_tolerance)))
+    fail("strip_tolerance must be >= 0, got " + std::to_string(options.strip_tolerance));
   if (!(options.straighten_width > 0 && std::isfinite(options.straighten_width)))
     fail("straighten_width must be > 0, got " + std::to_string(options.straighten_width));
 }
@@ -539,10 +674,30 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
   }
   labels = consolidate_regions(graph, labels, options.min_area_fraction * graph.total_area);
   LabelledSurface surface = labelled_surface(mesh, labels);
+  if (options.strip_tolerance <= 0 || next_label <= static_cast<int>(components.size())) {
+    if (options.straighten) {
+      straighten_boundaries(surface, {options.straighten_width * graph.mean_edge_length});
+    }
+    return parts_of(surface);
+  }
+  // The regions were judged on meshes cut out one at a time and before straightening: judge
+  // the parts as they will be emitted, straightened or not, against the model whole.
+  constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
+  std::vector<Mesh> best = parts_of(surface);
+  int best_cost = hierarchy.strips_of(best, kUnbounded);
   if (options.straighten) {
     straighten_boundaries(surface, {options.straighten_width * graph.mean_edge_length});
+    std::vector<Mesh> straightened = parts_of(surface);
+    const int cost = hierarchy.strips_of(straightened, best_cost);
+    if (cost <= best_cost) {
+      best = std::move(straightened);
+      best_cost = cost;
+    }
   }
-  return parts_of(surface);
+  std::vector<int> component_labels = component;
+  std::vector<Mesh> whole = parts_of(labelled_surface(mesh, component_labels));
+  if (hierarchy.strips_of(whole, best_cost) <= best_cost) return whole;
+  return best;
 }
 
 }  // namespace papercraft

@@ -25,7 +25,7 @@ struct FuzzySegmentOptions {
   int max_parts = 10;
   /// Levels of the hierarchy when parts == 0, >= 1: each part of a level is decomposed again
   /// unless it is smaller than twice the minimum area or at this depth.
-  int max_depth = 2;
+  int max_depth = 3;
   /// Weight of the angular term in the dual-graph distance, 1 - delta of Katz & Tal eq. (1);
   /// the geodesic term gets the rest. In [0, 1].
   double angular_weight = 0.8;
@@ -51,6 +51,19 @@ struct FuzzySegmentOptions {
   /// Parts smaller than this fraction of the total area are merged into a neighbour; a region
   /// smaller than twice this is not decomposed further. In [0, 1).
   double min_area_fraction = 0.01;
+  /// With parts == 0 and a positive value, each level of the hierarchy is judged by its cost:
+  /// the default refinement (select.geodesic, ruled.twist_dp, hausdorff.bounded, cut.harmonic)
+  /// is run on the region and on its parts at this absolute tolerance, and the decomposition
+  /// (with or without the boundaries the rule above would drop) that makes the fewest strips
+  /// is kept, none unless it makes fewer strips than the region whole. 0 turns this off.
+  /// The segment.fuzzy node sets it to the model's tolerance (param strip_estimate).
+  double strip_tolerance = 0;
+  /// With strip_tolerance > 0, also judge the two-way split between each region's farthest
+  /// faces (Katz & Tal's two-part decomposition) at every level.
+  bool two_way_candidate = true;
+  /// With strip_tolerance > 0, also judge each part of a decomposition of three or more
+  /// parts split off alone (the rest of the region whole).
+  bool single_part_candidates = true;
   /// Replace each boundary by the 1/2 iso-line of a harmonic field between the two sides,
   /// within straighten_width mean edge lengths of it (a smooth curve across the triangles
   /// instead of a staircase of edges). A boundary that runs along a crease (the surface folds

@@ -1,0 +1,94 @@
+#include "nodes/segment/strip_estimate.h"
+
+#include <algorithm>
+#include <exception>
+#include <vector>
+
+#include "nodes/cut/maximal_strip.h"
+#include "nodes/cut/through_witness.h"
+#include "nodes/hausdorff/bounded.h"
+#include "nodes/hausdorff/decision.h"
+#include "nodes/ruled/twist_dp.h"
+#include "nodes/select/geodesic.h"
+
+namespace papercraft {
+namespace {
+
+// Mirrors cut.harmonic's defaults: the maximal-strip search on parts of up to this many faces.
+constexpr long kSearchMaxFaces = 4000;
+// Mirrors cut.harmonic's max_depth.
+constexpr int kMaxDepth = 64;
+
+// cut.harmonic's defaults (its positive_weights param is true; the library default is false).
+WitnessCutOptions cut_options() {
+  WitnessCutOptions options;
+  options.harmonic.clamp_negative_weights = true;
+  return options;
+}
+
+}  // namespace
+
+int estimate_strips(const Mesh& root, double tolerance, int cap) {
+  struct Item {
+    Mesh part;
+    int depth;
+  };
+  const WitnessCutOptions cut_defaults = cut_options();
+  MaximalStripOptions search;
+  search.cut = cut_defaults;
+  std::vector<Item> stack;
+  stack.push_back({root, 0});
+  int strips = 0;
+  try {
+    while (!stack.empty()) {
+      Item item = std::move(stack.back());
+      stack.pop_back();
+      const Mesh& part = item.part;
+      const BoundarySelection selection = select_geodesic(part);
+      const Polyline a = selection_polyline(part, selection.first, selection.first_closed);
+      const Polyline b = selection_polyline(part, selection.second, selection.second_closed);
+      std::vector<std::vector<int>> holes;
+      auto used = [&](const std::vector<int>& loop) {
+        auto chosen = [&](const std::vector<int>& side, bool closed) {
+          return closed && std::find(side.begin(), side.end(), loop.front()) != side.end();
+        };
+        return chosen(selection.first, selection.first_closed) ||
+               chosen(selection.second, selection.second_closed);
+      };
+      for (auto& loop : boundary_loops(part))
+        if (!used(loop)) holes.push_back(std::move(loop));
+      const RuledStrip strip = twist_minimizing_strip(a, b);
+      const StripVerdict verdict =
+          judge_strip(part, strip, static_cast<int>(holes.size()), tolerance,
+                      [](const TriangleMesh& x, const TriangleMesh& y, double tau) {
+                        return certified_hausdorff_within(x, y, tau, BoundedHausdorffOptions{});
+                      });
+      if (verdict.accept) {
+        if (++strips > cap) return cap + 1;
+        continue;
+      }
+      if (item.depth >= kMaxDepth) return cap + 1;
+      WitnessCut cut;
+      if (verdict.hole < 0 && static_cast<long>(part.n_faces()) <= kSearchMaxFaces) {
+        cut = cut_maximal_strip(part, selection.first, selection.first_closed, selection.second,
+                                selection.second_closed, tolerance, search);
+      }
+      if (cut.pieces.empty()) {
+        cut = verdict.hole >= 0
+                  ? cut_through_hole(part, selection.first, selection.second, holes[verdict.hole],
+                                     cut_defaults)
+                  : cut_through_witness(part, selection.first, selection.second, verdict.witness,
+                                        cut_defaults);
+      }
+      if (cut.pieces.empty()) return cap + 1;
+      // Every piece makes at least one strip.
+      if (strips + static_cast<int>(stack.size() + cut.pieces.size()) > cap) return cap + 1;
+      for (Mesh& piece : cut.pieces) stack.push_back({std::move(piece), item.depth + 1});
+    }
+  } catch (const std::exception&) {
+    return cap + 1;
+  }
+  return strips;
+}
+
+}  // namespace papercraft
