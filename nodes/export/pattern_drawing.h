@@ -9,6 +9,9 @@
 //   labels   seam labels and piece numbers
 //   valley   valley folds
 //   mountain mountain folds, including the fold at the base of every tab
+// A gentle fold (FoldLine::gentle, a slight bend at a ruling) is drawn in its layer with a
+// faint thin pen, only as short marks at its two ends: the page shows the creases that
+// matter and still tells where to curve the paper.
 //   cut      one closed path per piece: around the piece and its tabs (each boundary loop a
 //            subpath), so a cutter runs it in one go
 

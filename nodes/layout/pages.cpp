@@ -1243,7 +1243,7 @@ PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& c
 // Folds and numbers.
 
 std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
-                                  double threshold_degrees) {
+                                  double threshold_degrees, double strong_degrees) {
   const FlatStrip& strip = *data.strip;
   std::unordered_map<int, char> in_piece;
   for (int t : piece.triangles) in_piece[t] = 1;
@@ -1267,8 +1267,9 @@ std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
           std::acos(std::clamp(n1.normalized().dot(n2.normalized()), -1.0, 1.0)) / kDegree;
       if (bend <= threshold_degrees) continue;
       const bool convex = (strip.vertices3d[d] - pa).dot(n1) < 0;
-      folds.push_back(
-          {data.points[a], data.points[b], convex ? FoldKind::Mountain : FoldKind::Valley, bend});
+      folds.push_back({data.points[a], data.points[b],
+                       convex ? FoldKind::Mountain : FoldKind::Valley, bend,
+                       bend < strong_degrees});
     }
   }
   return folds;
@@ -1329,6 +1330,7 @@ void validate_options(const LayoutOptions& o) {
   non_negative(o.scale, "scale");
   non_negative(o.tab_width_mm, "tab_width_mm");
   non_negative(o.fold_angle_degrees, "fold_angle_degrees");
+  non_negative(o.strong_fold_angle_degrees, "strong_fold_angle_degrees");
   non_negative(o.spacing_mm, "spacing_mm");
   positive(o.label_size_mm, "label_size_mm");
   positive(o.number_size_mm, "number_size_mm");
@@ -1574,7 +1576,8 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
     placed.outline.push_back(std::move(outline));
     placed.cut_outline.push_back(std::move(cut));
   }
-  for (FoldLine fold : piece_folds(data, piece, options.fold_angle_degrees)) {
+  for (FoldLine fold :
+       piece_folds(data, piece, options.fold_angle_degrees, options.strong_fold_angle_degrees)) {
     fold.a = to_page(fold.a);
     fold.b = to_page(fold.b);
     placed.folds.push_back(fold);

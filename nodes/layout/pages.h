@@ -16,7 +16,10 @@
 // - Fold lines: an inner edge whose bend angle (between the normals of its two triangles,
 //   computed from vertices3d) exceeds fold_angle_degrees. A convex edge (the model bulges
 //   outward there) is a Mountain fold seen from the printed side; a concave one a Valley.
-//   A tab folds behind the printed side, so its base is a mountain fold too.
+//   A tab folds behind the printed side, so its base is a mountain fold too. A fold bent
+//   less than strong_fold_angle_degrees is `gentle`: a smooth strip bends a little at
+//   every ruling, and those lines only tell a person to curve the paper there, so
+//   exporters draw them faint and short (see nodes/export/pattern_drawing.h).
 // - Tabs go on one side of every seam: the side whose piece comes first in order
 //   (strip id, piece index, position on the piece's boundary). If that side has no room
 //   (the tab would cover its own piece or another tab even when shrunk), the other side
@@ -60,10 +63,13 @@ struct LayoutOptions {
   double tab_width_mm = 5.0;        // 0: no tabs
   double tab_angle_degrees = 45.0;  // angle between a tab's ends and its seam edge
   double fold_angle_degrees = 0.5;  // bend angle above which an inner edge is a fold line
-  double spacing_mm = 2.0;          // gap between the bounding boxes of pieces
-  double label_size_mm = 2.5;       // seam label text height
-  double number_size_mm = 4.0;      // piece number text height (smaller on thin pieces)
-  double footer_mm = 8.0;           // band at the bottom of the printable area: scale bar
+  /// Bend angle from which a fold line is a real crease (drawn in full mountain/valley
+  /// style); folds between fold_angle_degrees and this are gentle bends.
+  double strong_fold_angle_degrees = 10.0;
+  double spacing_mm = 2.0;      // gap between the bounding boxes of pieces
+  double label_size_mm = 2.5;   // seam label text height
+  double number_size_mm = 4.0;  // piece number text height (smaller on thin pieces)
+  double footer_mm = 8.0;       // band at the bottom of the printable area: scale bar
   PackingMethod packing = PackingMethod::MaxRects;
 };
 
@@ -83,6 +89,7 @@ struct FoldLine {
   Vec2 b = Vec2::Zero();
   FoldKind kind = FoldKind::Mountain;
   double bend_degrees = 0.0;  // 0 = flat, 90 = a cube edge
+  bool gentle = false;        // bend_degrees < strong_fold_angle_degrees: curve, do not crease
 };
 
 /// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per

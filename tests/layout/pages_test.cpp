@@ -358,10 +358,14 @@ TEST(LayoutPages, FoldThresholdAndDirection) {
   ASSERT_EQ(folds.size(), 1u);
   EXPECT_EQ(folds[0].kind, FoldKind::Valley);
   EXPECT_NEAR(folds[0].bend_degrees, 0.3, 1e-6);
+  EXPECT_TRUE(folds[0].gentle);
   folds = layout_pages(bent(-30), options).pages[0].pieces[0].folds;
   ASSERT_EQ(folds.size(), 1u);
   EXPECT_EQ(folds[0].kind, FoldKind::Mountain);
   EXPECT_NEAR(folds[0].bend_degrees, 30, 1e-6);
+  EXPECT_FALSE(folds[0].gentle);
+  options.strong_fold_angle_degrees = 45;
+  EXPECT_TRUE(layout_pages(bent(-30), options).pages[0].pieces[0].folds.at(0).gentle);
 }
 
 TEST(LayoutPages, OpenEdgesGetNoTabsOrLabels) {
