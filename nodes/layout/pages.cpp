@@ -643,7 +643,8 @@ std::vector<std::vector<int>> components(const StripData& data, const std::vecto
 }
 
 // Triangles of `set` in Dijkstra order (centroid distances over shared edges) from `seed`.
-std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& set, int seed) {
+std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& set, int seed,
+                                std::vector<double>* distances = nullptr) {
   const FlatStrip& strip = *data.strip;
   std::unordered_map<int, double> distance;
   for (int t : set) distance[t] = std::numeric_limits<double>::infinity();
@@ -663,6 +664,7 @@ std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& s
     if (done.count(t)) continue;
     done[t] = 1;
     order.push_back(t);
+    if (distances) distances->push_back(d);
     const Triangle& tri = strip.triangles[t];
     for (int i = 0; i < 3; ++i) {
       auto it = data.owner.find(edge_key(tri[(i + 1) % 3], tri[i]));
@@ -688,7 +690,10 @@ std::string unique_label(const std::string& wanted, std::set<std::string>& used)
 
 // Splits the strip into connected triangle sets each fitting width x height: a Dijkstra
 // prefix from one end of the set (a ruled strip is a path of triangles, so the cut is one
-// ruling), largest that fits, repeated on what is left.
+// ruling), repeated on what is left. The prefix is not the largest that fits (that leaves
+// a sliver at the end) but the one nearest 1/k of the set's length, where k is the number
+// of pieces the greedy split needs, among those that leave a rest still splittable into
+// k - 1 pieces: the pieces come out of similar length.
 std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double height,
                                            std::set<std::string>& used_labels) {
   std::vector<std::vector<int>> done;
@@ -709,14 +714,45 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double
       continue;
     }
     std::vector<int> from_first = dijkstra_order(data, set, set.front());
-    std::vector<int> order = dijkstra_order(data, set, from_first.back());
-    std::size_t lo = 1, hi = order.size() - 1;  // prefix `lo` fits or is a single triangle
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi + 1) / 2;
-      if (fits(std::vector<int>(order.begin(), order.begin() + mid)))
-        lo = mid;
-      else
-        hi = mid - 1;
+    std::vector<double> distance;
+    std::vector<int> order = dijkstra_order(data, set, from_first.back(), &distance);
+    // The longest prefix of order[begin..] that fits (at least one triangle).
+    auto longest_fitting = [&](std::size_t begin) {
+      std::size_t lo = begin + 1, hi = order.size();
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi + 1) / 2;
+        if (fits(std::vector<int>(order.begin() + begin, order.begin() + mid)))
+          lo = mid;
+        else
+          hi = mid - 1;
+      }
+      return lo;
+    };
+    auto greedy_count = [&](std::size_t begin) {
+      int count = 0;
+      for (; begin < order.size(); ++count) begin = longest_fitting(begin);
+      return count;
+    };
+    std::size_t lo = std::min(longest_fitting(0), order.size() - 1);
+    const int pieces = greedy_count(0);
+    if (pieces >= 2 && lo > 1) {
+      // Smallest cut whose rest still splits into pieces - 1 (the count only falls as the
+      // cut moves on), then the cut nearest 1/pieces of the length within [first, lo].
+      std::size_t first = 1, last = lo;
+      while (first < last) {
+        const std::size_t mid = (first + last) / 2;
+        if (greedy_count(mid) <= pieces - 1)
+          last = mid;
+        else
+          first = mid + 1;
+      }
+      const double target = distance.back() / pieces;
+      std::size_t cut =
+          std::lower_bound(distance.begin(), distance.end(), target) - distance.begin();
+      cut = std::clamp(cut, first, lo);
+      if (cut < lo && fits(std::vector<int>(order.begin(), order.begin() + cut)) &&
+          components(data, std::vector<int>(order.begin() + cut, order.end())).size() == 1)
+        lo = cut;
     }
     std::vector<int> head(order.begin(), order.begin() + lo);
     std::sort(head.begin(), head.end());

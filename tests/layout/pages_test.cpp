@@ -404,6 +404,15 @@ TEST(LayoutPages, LongStripIsSplitAtRulingsIntoPiecesThatFit) {
       }
   }
   EXPECT_EQ(numbers, (std::set<std::string>{"7.1", "7.2", "7.3"}));
+  // Balanced: about 200 mm each, not two full pages and a 90 mm remainder (greedy).
+  for (const PlacedPiece* piece : pieces) {
+    Vec2 lo = piece->vertices[0], hi = lo;
+    for (const Vec2& v : piece->vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    EXPECT_GE((hi - lo).maxCoeff(), 0.5 * (297 - 2 * options.margin_mm)) << piece->number.text;
+  }
   EXPECT_EQ(seam_edges.size(), 2u);
   for (const auto& [label, count] : seam_edges) EXPECT_EQ(count, 2) << label;
   ASSERT_FALSE(layout.warnings.empty());
@@ -419,7 +428,19 @@ TEST(LayoutPages, CurvedStripIsSplitIntoPiecesThatFit) {
   options.scale = 1;
   const PatternLayout layout = layout_pages(strips, options);
   expect_valid_layout(layout, strips, options);
-  EXPECT_GE(pieces_of(layout, 2).size(), 2u);
+  const auto pieces = pieces_of(layout, 2);
+  ASSERT_GE(pieces.size(), 2u);
+  // Balanced: no piece is a sliver next to the others.
+  std::vector<double> areas;
+  for (const PlacedPiece* piece : pieces) {
+    double area = 0;
+    for (const Triangle& t : piece->triangles)
+      area += 0.5 * std::abs(cross(piece->vertices[t[1]] - piece->vertices[t[0]],
+                                   piece->vertices[t[2]] - piece->vertices[t[0]]));
+    areas.push_back(area);
+  }
+  EXPECT_GE(*std::min_element(areas.begin(), areas.end()),
+            0.6 * *std::max_element(areas.begin(), areas.end()));
 }
 
 // A U-shaped piece whose slot walls are glued to each other: the tab shrinks to fit in a
