@@ -37,7 +37,8 @@ struct StyleOptions {
   StylePreset preset = StylePreset::Print;
   std::string font_family = "sans-serif";
   std::string title;  // printed in the footer when not empty (the model's name)
-  /// A PNG texture drawn onto pieces that carry uvs (PDF only); empty: none.
+  /// A PNG texture drawn onto pieces that carry uvs and onto their tabs (in the print
+  /// layer; the tabs then go unfilled); empty: none.
   std::string texture_path;
 };
 
@@ -67,6 +68,10 @@ struct DrawLayer {
   std::vector<DrawPath> paths;
   std::vector<DrawText> texts;
 };
+
+/// The texture of a page: one patch per triangle of every piece with uvs (clipped to the
+/// triangle) and the patches of its tabs (TexturePatch in nodes/layout/pages.h).
+std::vector<TexturePatch> page_texture_patches(const Page& page);
 
 /// The layers of page `page_index` of `layout`, bottom first (see the file comment).
 /// \throws InvalidInputException if page_index is not a page of the layout.

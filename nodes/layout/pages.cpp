@@ -433,9 +433,10 @@ struct PieceEdge {
 };
 
 struct Flap {
-  std::vector<Vec2> base;   // p_a .. p_b+1, strip frame mm
-  std::vector<Vec2> outer;  // q_a .. q_b+1
-  int tab = -1;             // index into Piece::tabs
+  std::vector<Vec2> base;             // p_a .. p_b+1, strip frame mm
+  std::vector<Vec2> outer;            // q_a .. q_b+1
+  int tab = -1;                       // index into Piece::tabs
+  std::vector<TexturePatch> texture;  // strip frame mm
 };
 
 struct PieceTab {
@@ -1020,7 +1021,9 @@ std::vector<Vec2> clip(const std::vector<Vec2>& polygon,
 // `outer` to the flap's outer chain; empty if a slice would be degenerate or not convex.
 std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double h,
                                            double start_angle, double end_angle,
-                                           std::vector<Vec2>* outer) {
+                                           std::vector<Vec2>* outer,
+                                           std::vector<int>* slice_edges) {
+  slice_edges->clear();
   const std::size_t k = base.size() - 1;
   std::vector<Vec2> d(k), n(k), offset(k + 1);
   for (std::size_t i = 0; i < k; ++i) {
@@ -1044,7 +1047,10 @@ std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double
       if (e1.norm() < 1e-9 || cross(e1, e2) <= 1e-9 * e1.norm() * e2.norm()) return {};
     }
     std::vector<Vec2> slice = clip(clip(quad, after_start), before_end);
-    if (slice.size() >= 3 && std::abs(signed_area(slice)) > 1e-12) slices.push_back(slice);
+    if (slice.size() >= 3 && std::abs(signed_area(slice)) > 1e-12) {
+      slices.push_back(slice);
+      slice_edges->push_back(static_cast<int>(j));
+    }
   }
   std::vector<Vec2> band(base.rbegin(), base.rend());
   band.insert(band.end(), offset.begin(), offset.end());
@@ -1081,6 +1087,7 @@ struct FlapPlan {
   std::vector<Vec2> base;
   std::vector<Vec2> outer;
   std::vector<std::vector<Vec2>> slices;
+  std::vector<int> slice_edges;  // index into `edges` of each slice's base edge
 };
 
 // Flaps along a chain: one per nearly straight run of edges (a flap cannot fold along a
@@ -1181,10 +1188,12 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       const double h = h0 * factor;
       if (h < geometry.min_height) break;
       std::vector<Vec2> outer;
-      auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer);
+      std::vector<int> slice_edges;
+      auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer, &slice_edges);
       if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
       plan.outer = std::move(outer);
       plan.slices = std::move(slices);
+      plan.slice_edges = std::move(slice_edges);
       break;
     }
     if (plan.slices.empty()) continue;
@@ -1218,13 +1227,20 @@ double chain_length(const StripData& data, const Piece& piece, const Chain& chai
 }
 
 void commit_flaps(Piece& piece, const Chain& chain, const std::string& printed,
-                  std::vector<FlapPlan>& plans) {
+                  std::vector<FlapPlan>& plans,
+                  const std::function<std::optional<TexturePatch>(int)>& edge_texture) {
   PieceTab tab;
   tab.label = printed;
   const int tab_index = static_cast<int>(piece.tabs.size());
   for (FlapPlan& plan : plans) {
     const int flap_index = static_cast<int>(piece.flaps.size());
-    piece.flaps.push_back({plan.base, plan.outer, tab_index});
+    Flap flap{plan.base, plan.outer, tab_index, {}};
+    for (std::size_t k = 0; k < plan.slices.size(); ++k)
+      if (auto patch = edge_texture(plan.edges[plan.slice_edges[k]])) {
+        patch->clip = plan.slices[k];
+        flap.texture.push_back(std::move(*patch));
+      }
+    piece.flaps.push_back(std::move(flap));
     tab.flaps.push_back(flap_index);
     for (std::size_t i = 0; i < plan.edges.size(); ++i) {
       PieceEdge& edge = piece.loops[chain.loop][plan.edges[i]];
@@ -1487,9 +1503,59 @@ ChainKey chain_key(const Chain& c, const std::vector<Piece>& pieces,
   return {strips[piece.strip].strip->id, piece.index, c.loop, c.start};
 }
 
+// The texture for a tab along loop edge `edge` of `piece`'s loop `loop`, the tab lying on
+// the edge's right. A tab is glued under the neighbouring piece, so it shows what continues
+// there: the partner triangle across the seam, unfolded onto the tab's side (its own uvs,
+// which also carries the texture across a uv seam of the atlas). Without a partner (or
+// partner uvs), the piece's own triangle at the edge, its affine map extended.
+std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
+                                        const std::vector<StripData>& strips,
+                                        const SeamEdges& seams, int piece_index, int loop,
+                                        int edge) {
+  const Piece& piece = pieces[piece_index];
+  const StripData& data = strips[piece.strip];
+  const PieceEdge& e = piece.loops[loop][edge];
+  const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+  auto third = [](const FlatStrip& strip, int t, int u, int v) {
+    for (int w : strip.triangles[t])
+      if (w != u && w != v) return w;
+    return -1;
+  };
+  const int id = seams.id[piece_index][loop][edge];
+  const int partner = id >= 0 ? seams.partner[id] : -1;
+  if (partner >= 0) {
+    const auto [p2, l2, i2] = seams.refs[partner];
+    const StripData& other = strips[pieces[p2].strip];
+    const PieceEdge& f = pieces[p2].loops[l2][i2];
+    const FlatStrip& strip2 = *other.strip;
+    auto owner = other.owner.find(edge_key(f.v0, f.v1));
+    if (!strip2.uvs.empty() && owner != other.owner.end()) {
+      const int d = third(strip2, owner->second, f.v0, f.v1);
+      const Vec2 p0 = other.points[f.v0], p1 = other.points[f.v1], q = other.points[d];
+      const double length = (p1 - p0).norm(), own_length = (a - b).norm();
+      if (d >= 0 && length > 0 && own_length > 0) {
+        // f runs v0 -> v1 glued to this edge's v1 -> v0: the same frame along (b -> a).
+        const Vec2 along = (p1 - p0) / length, own_along = (a - b) / own_length;
+        const double s = (q - p0).dot(along), t = cross(along, q - p0);
+        const Vec2 unfolded = b + s * own_along + t * Vec2(-own_along.y(), own_along.x());
+        return TexturePatch{
+            {b, a, unfolded}, {strip2.uvs[f.v0], strip2.uvs[f.v1], strip2.uvs[d]}, {}};
+      }
+    }
+  }
+  const FlatStrip& strip = *data.strip;
+  if (strip.uvs.empty()) return std::nullopt;
+  auto owner = data.owner.find(edge_key(e.v0, e.v1));
+  if (owner == data.owner.end()) return std::nullopt;
+  const int c = third(strip, owner->second, e.v0, e.v1);
+  if (c < 0) return std::nullopt;
+  return TexturePatch{{a, b, data.points[c]}, {strip.uvs[e.v0], strip.uvs[e.v1], strip.uvs[c]}, {}};
+}
+
 void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
               const std::vector<Chain>& chains, const std::vector<SeamPair>& pairs,
-              const LayoutOptions& options, std::vector<std::string>& warnings) {
+              const SeamEdges& seams, const LayoutOptions& options,
+              std::vector<std::string>& warnings) {
   const TabGeometry geometry{options.tab_width_mm, options.tab_angle_degrees * kDegree,
                              std::min(1.0, 0.2 * options.tab_width_mm), 1e-6};
   std::vector<std::optional<PieceShapes>> shapes(pieces.size());
@@ -1538,7 +1604,9 @@ void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
         piece_shapes_.slices.push_back(slice);
         piece_shapes_.slice_boxes.push_back(box);
       }
-    commit_flaps(pieces[chain.piece], chain, pair.printed, best_plans);
+    commit_flaps(pieces[chain.piece], chain, pair.printed, best_plans, [&](int edge) {
+      return tab_texture(pieces, strips, seams, chain.piece, chain.loop, edge);
+    });
   }
 }
 
@@ -1630,6 +1698,11 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
       for (const Vec2& p : flap.base) base.push_back(to_page(p));
       tab.flaps.push_back(std::move(polygon));
       tab.bases.push_back(std::move(base));
+      for (TexturePatch patch : flap.texture) {
+        for (Vec2& corner : patch.corners) corner = to_page(corner);
+        for (Vec2& point : patch.clip) point = to_page(point);
+        tab.texture.push_back(std::move(patch));
+      }
     }
     placed.tabs.push_back(std::move(tab));
   }
@@ -1748,7 +1821,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
           chain_label(p.strips[piece.strip], piece, chain, pair.printed, options.label_size_mm));
     }
   }
-  if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, options, warnings);
+  if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);
 
   std::vector<Orientation> orientations;
   std::vector<int> packed, oversized;

@@ -27,6 +27,7 @@
 //
 // Example (node config): layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}}
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -92,6 +93,14 @@ struct FoldLine {
   bool gentle = false;        // bend_degrees < strong_fold_angle_degrees: curve, do not crease
 };
 
+/// A piece of texture: the affine map taking `uvs` (texture coordinates in [0, 1], v up)
+/// to `corners` (page mm), painted inside the convex polygon `clip` (page mm).
+struct TexturePatch {
+  std::array<Vec2, 3> corners;
+  std::array<Vec2, 3> uvs;
+  std::vector<Vec2> clip;
+};
+
 /// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per
 /// nearly straight run of edges). Each flap polygon is counter-clockwise on the page as a
 /// reader sees it: its base polyline (on the seam) in reverse, then its outer chain; `bases`
@@ -100,6 +109,9 @@ struct Tab {
   std::string label;
   std::vector<std::vector<Vec2>> flaps;
   std::vector<std::vector<Vec2>> bases;
+  /// Where the strips have uvs: per flap and base edge, the texture continuing across the
+  /// seam (the partner triangle unfolded onto the tab), clipped to the flap.
+  std::vector<TexturePatch> texture;
 };
 
 /// A boundary edge of a placed piece in page mm, the piece on its left as a reader sees it.

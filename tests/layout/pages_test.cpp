@@ -368,6 +368,48 @@ TEST(LayoutPages, FoldThresholdAndDirection) {
   EXPECT_TRUE(layout_pages(bent(-30), options).pages[0].pieces[0].folds.at(0).gentle);
 }
 
+// Two flat strips glued along y = 0 in 3D, each with its own uv offset (as across a uv
+// seam of an atlas): a tab shows the partner's texture where the partner would lie.
+TEST(LayoutPages, TabTextureContinuesThePartnerStrip) {
+  std::vector<FlatStrip> strips = {cell_strip(0, 2, 1, 20, 10), cell_strip(1, 2, 1, 20, 10)};
+  mark_seam(strips[0], "s", 1, [](const Vec2& m) { return m.y() == 0; });
+  mark_seam(strips[1], "s", 0, [](const Vec2& m) { return m.y() == 10; });
+  auto uv_of = [](int strip, const Vec2& p3d) {
+    return Vec2(p3d.x() / 40 + 0.5 * strip, (p3d.y() + 10) / 20);
+  };
+  for (int k = 0; k < 2; ++k)
+    for (std::size_t v = 0; v < strips[k].vertices3d.size(); ++v) {
+      strips[k].vertices3d[v].y() -= 10 * k;
+      strips[k].uvs.push_back(uv_of(k, strips[k].vertices3d[v].head<2>()));
+    }
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  int patches = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces)
+      for (const Tab& tab : piece.tabs)
+        for (const TexturePatch& patch : tab.texture) {
+          ++patches;
+          Eigen::Matrix3d from, to;
+          for (int k = 0; k < 3; ++k) {
+            from.col(k) << patch.uvs[k], 1.0;
+            to.col(k) << patch.corners[k], 1.0;
+          }
+          const Eigen::Matrix3d page_to_uv = from * to.inverse();
+          Vec2 centre = Vec2::Zero();
+          for (const Vec2& c : patch.clip) centre += c / static_cast<double>(patch.clip.size());
+          const Vec2 uv = (page_to_uv * Eigen::Vector3d(centre.x(), centre.y(), 1)).head<2>();
+          // The flat continuation of the piece's own strip frame, in 3D.
+          const Vec2 frame =
+              piece.transform.linear.inverse() * (centre - piece.transform.translation);
+          const Vec2 p3d = frame - Vec2(0, 10 * piece.strip_id);
+          const Vec2 expected = uv_of(1 - piece.strip_id, p3d);
+          EXPECT_NEAR((uv - expected).norm(), 0, 1e-9) << uv.transpose();
+        }
+  EXPECT_GE(patches, 2);  // one per seam edge under the tab
+}
+
 TEST(LayoutPages, OpenEdgesGetNoTabsOrLabels) {
   const std::vector<FlatStrip> strips = {cell_strip(3, 4, 2, 10, 10)};
   LayoutOptions options;
