@@ -26,6 +26,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
 constexpr double kFitSlack = 1e-7;  // mm; rounding in rotations must not reject a fit
+// Text boxes: an advance of 0.6 em per character (sans-serif digits and capitals) and
+// 0.6 em either side of the centre line, as the exporters centre text.
+constexpr double kCharWidthEm = 0.6;
+constexpr double kHalfLineEm = 0.6;
 
 double cross(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
@@ -449,6 +453,7 @@ struct PieceLabel {
   Vec2 position;
   Vec2 direction;
   double size;
+  int chain = -1;  // the seam chain it names
 };
 
 struct Piece {
@@ -460,6 +465,7 @@ struct Piece {
   std::vector<Flap> flaps;
   std::vector<PieceTab> tabs;
   std::vector<PieceLabel> labels;
+  std::optional<PieceLabel> number;  // set by arrange_labels
 };
 
 std::string strip_name(const FlatStrip& strip) {
@@ -1366,6 +1372,117 @@ double upright_degrees(const Vec2& page_direction) {
   return angle;
 }
 
+PieceLabel piece_number(const StripData& data, const Piece& piece, const OrientedBox& box,
+                        const LayoutOptions& options) {
+  auto [centre, radius] = number_spot(data, piece);
+  PieceLabel number;
+  number.text = std::to_string(data.strip->id);
+  if (piece.count > 1) number.text += "." + std::to_string(piece.index + 1);
+  number.position = centre;
+  number.size = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
+  number.direction = Vec2(std::cos(box.angle), std::sin(box.angle));
+  return number;
+}
+
+std::array<Vec2, 4> text_box(const Vec2& centre, const Vec2& direction, double size,
+                             std::size_t characters) {
+  const Vec2 along = direction.normalized() * (0.5 * kCharWidthEm * size * characters + 0.1 * size);
+  const Vec2 across = Vec2(-direction.y(), direction.x()).normalized() * (kHalfLineEm * size);
+  return {centre - along - across, centre + along - across, centre + along + across,
+          centre - along + across};
+}
+
+bool inside_triangles(const Vec2& p, const PieceShapes& shapes) {
+  for (std::size_t t = 0; t < shapes.triangles.size(); ++t) {
+    const Box2& box = shapes.triangle_boxes[t];
+    if (p.x() < box.lo.x() - 1e-9 || p.x() > box.hi.x() + 1e-9 || p.y() < box.lo.y() - 1e-9 ||
+        p.y() > box.hi.y() + 1e-9)
+      continue;
+    const auto& c = shapes.triangles[t];
+    const double scale = 1e-9 * (box.hi - box.lo).squaredNorm();
+    if (cross(c[1] - c[0], p - c[0]) >= -scale && cross(c[2] - c[1], p - c[1]) >= -scale &&
+        cross(c[0] - c[2], p - c[2]) >= -scale)
+      return true;
+  }
+  return false;
+}
+
+// A text box lies on the piece: its corners and edge midpoints are on triangles of it.
+bool box_on_piece(const std::array<Vec2, 4>& box, const PieceShapes& shapes) {
+  for (int i = 0; i < 4; ++i) {
+    if (!inside_triangles(box[i], shapes)) return false;
+    if (!inside_triangles(0.5 * (box[i] + box[(i + 1) % 4]), shapes)) return false;
+  }
+  return inside_triangles(0.25 * (box[0] + box[1] + box[2] + box[3]), shapes);
+}
+
+// Moves each seam label along its chain (and shrinks it, down to 1.2 mm) until its text box
+// lies on the piece and clear of the piece number and the labels placed before it; a label
+// that finds no such spot keeps its first one. The number stays where number_spot puts it.
+void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
+                    const OrientedBox& box, const LayoutOptions& options) {
+  const PieceShapes shapes = piece_shapes(data, piece);
+  piece.number = piece_number(data, piece, box, options);
+  std::vector<std::array<Vec2, 4>> taken;
+  taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                           piece.number->text.size()));
+  auto clear = [&](const std::array<Vec2, 4>& candidate) {
+    for (const auto& other : taken)
+      if (convex_overlap(candidate.data(), 4, other.data(), 4, 0.0)) return false;
+    return true;
+  };
+  for (PieceLabel& label : piece.labels) {
+    if (label.chain < 0) continue;
+    const Chain& chain = chains[label.chain];
+    const auto& loop = piece.loops[chain.loop];
+    const double total = chain_length(data, piece, chain);
+    auto point_at = [&](double at, Vec2* direction) {
+      double walked = 0;
+      for (int i = 0; i < chain.count; ++i) {
+        const PieceEdge& e = loop[(chain.start + i) % loop.size()];
+        const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+        const double length = (b - a).norm();
+        if (length <= 0) continue;
+        if (walked + length >= at || i == chain.count - 1) {
+          *direction = (b - a) / length;
+          return Vec2(a + std::clamp((at - walked) / length, 0.0, 1.0) * (b - a));
+        }
+        walked += length;
+      }
+      *direction = Vec2::UnitX();
+      return label.position;
+    };
+    bool placed = false;
+    const auto first_box = text_box(label.position, label.direction, label.size, label.text.size());
+    if (box_on_piece(first_box, shapes) && clear(first_box)) {
+      taken.push_back(first_box);
+      continue;
+    }
+    for (double size : {label.size, 0.8 * label.size, 0.65 * label.size, 0.5 * label.size}) {
+      if (size < std::min(1.2, label.size) - 1e-12) break;
+      for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.05, 0.95}) {
+        for (double gap : {0.6, 0.3, 1.2}) {
+          Vec2 direction;
+          const Vec2 on_edge = point_at(fraction * total, &direction);
+          const Vec2 centre =
+              on_edge + Vec2(-direction.y(), direction.x()) * (kHalfLineEm * size + gap);
+          const auto candidate = text_box(centre, direction, size, label.text.size());
+          if (!box_on_piece(candidate, shapes) || !clear(candidate)) continue;
+          label.position = centre;
+          label.direction = direction;
+          label.size = size;
+          taken.push_back(candidate);
+          placed = true;
+          break;
+        }
+        if (placed) break;
+      }
+      if (placed) break;
+    }
+    if (!placed) taken.push_back(first_box);
+  }
+}
+
 void validate_options(const LayoutOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!(v > 0) || !std::isfinite(v))
@@ -1709,12 +1826,9 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
   for (const PieceLabel& label : piece.labels)
     placed.labels.push_back(
         {label.text, to_page(label.position), direction_degrees(label.direction), label.size});
-  auto [centre, radius] = number_spot(data, piece);
-  placed.number.text = std::to_string(strip.id);
-  if (piece.count > 1) placed.number.text += "." + std::to_string(piece.index + 1);
-  placed.number.position = to_page(centre);
-  placed.number.size_mm = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
-  placed.number.angle_degrees = direction_degrees(Vec2(std::cos(box.angle), std::sin(box.angle)));
+  const PieceLabel number = piece.number ? *piece.number : piece_number(data, piece, box, options);
+  placed.number = {number.text, to_page(number.position), direction_degrees(number.direction),
+                   number.size};
   return placed;
 }
 
@@ -1819,6 +1933,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
         loop[(chain.start + i) % loop.size()].printed = pair.printed;
       piece.labels.push_back(
           chain_label(p.strips[piece.strip], piece, chain, pair.printed, options.label_size_mm));
+      piece.labels.back().chain = side;
     }
   }
   if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);
@@ -1829,6 +1944,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
     orientations.push_back(orient_piece(p.strips[pieces[i].strip], pieces[i], p.area));
     const Orientation& o = orientations.back();
+    arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, o.box, options);
     if (o.fits && o.box.size.minCoeff() > 0) {
       packed.push_back(i);
       sizes.push_back(o.box.size);
@@ -1868,6 +1984,12 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     add_page_furniture(layout.pages[i], i, static_cast<int>(layout.pages.size()), options,
                        p.mm_per_unit);
   return layout;
+}
+
+std::array<Vec2, 4> label_box(const Label& label) {
+  const double angle = label.angle_degrees * kDegree;
+  return text_box(label.position, Vec2(std::cos(angle), std::sin(angle)), label.size_mm,
+                  label.text.size());
 }
 
 std::vector<PackedRectangle> pack_rectangles(const std::vector<Vec2>& sizes, double bin_width,

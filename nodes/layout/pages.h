@@ -210,6 +210,12 @@ double layout_scale(const std::vector<FlatStrip>& strips, const LayoutOptions& o
 std::vector<int> strips_exceeding_page(const std::vector<FlatStrip>& strips,
                                        const LayoutOptions& options);
 
+/// The box the layout keeps clear for a label's text (corners in page mm, counter-clockwise
+/// in the label's frame): 0.6 em per character plus 0.1 em each end, 1.2 em high. Labels on
+/// a page do not overlap these boxes, and a seam label's box lies on its piece where the
+/// piece has room (else it keeps its place at the seam's middle).
+std::array<Vec2, 4> label_box(const Label& label);
+
 /// Where pack_rectangles put one rectangle: its page and its top-left corner in the bin;
 /// `rotated` when it lies with its width along y.
 struct PackedRectangle {

@@ -116,6 +116,23 @@ bool boxes_overlap(const Shape& a, const Shape& b) {
 }
 
 // Every invariant a layout promises (pages_test's contract with layout_pages).
+// On a triangle of the piece or a flap of its tabs (borders included, to 1e-6 mm).
+bool on_piece(const Vec2& p, const PlacedPiece& piece) {
+  constexpr double kSlack = 1e-6;
+  for (const Triangle& t : piece.triangles) {
+    const Vec2 &a = piece.vertices[t[0]], &b = piece.vertices[t[1]], &c = piece.vertices[t[2]];
+    const double s = cross(b - a, c - a) < 0 ? -1.0 : 1.0;  // page triangles are clockwise
+    if (s * cross(b - a, p - a) >= -kSlack * (b - a).norm() &&
+        s * cross(c - b, p - b) >= -kSlack * (c - b).norm() &&
+        s * cross(a - c, p - c) >= -kSlack * (a - c).norm())
+      return true;
+  }
+  for (const Tab& tab : piece.tabs)
+    for (const auto& flap : tab.flaps)
+      if (strictly_inside(p, flap, -kSlack)) return true;
+  return false;
+}
+
 void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStrip>& strips,
                          const LayoutOptions& options) {
   const double x0 = options.margin_mm - kEps, y0 = options.margin_mm - kEps;
@@ -206,6 +223,31 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
         }
       shapes.push_back(std::move(mine));
     }
+    // No two label boxes (seam labels and piece numbers) overlap, and every seam label lies
+    // on its piece.
+    std::vector<std::array<Vec2, 4>> boxes;
+    std::vector<std::string> names;
+    for (const PlacedPiece& piece : page.pieces) {
+      for (const Label& label : piece.labels) {
+        boxes.push_back(label_box(label));
+        names.push_back(label.text);
+        const auto& box = boxes.back();
+        for (int i = 0; i < 4; ++i)
+          for (const Vec2& point : {box[i], Vec2(0.5 * (box[i] + box[(i + 1) % 4]))})
+            EXPECT_TRUE(on_piece(point, piece))
+                << "label " << label.text << " of strip " << piece.strip_id
+                << " leaves its piece at " << point.transpose();
+      }
+      boxes.push_back(label_box(piece.number));
+      names.push_back(piece.number.text);
+    }
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+      for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+        std::vector<Vec2> pa(boxes[a].begin(), boxes[a].end()),
+            pb(boxes[b].begin(), boxes[b].end());
+        EXPECT_FALSE(polygons_overlap(pa, pb))
+            << "labels " << names[a] << " and " << names[b] << " overlap on page " << p;
+      }
     // No two pieces (with their tabs) overlap.
     for (std::size_t a = 0; a < shapes.size(); ++a)
       for (std::size_t b = a + 1; b < shapes.size(); ++b)
