@@ -138,27 +138,27 @@ void register_export_files(Registry& registry) {
            }
            if (pattern.layout) {
              const PatternLayout& layout = *pattern.layout;
+             StyleOptions page_style = style;
+             page_style.title = model.name;
+             if (strips.model && !strips.model->texture_path.empty()) {
+               if (std::filesystem::path(strips.model->texture_path).extension() == ".png") {
+                 page_style.texture_path = strips.model->texture_path;
+               } else {
+                 model.note("texture " + strips.model->texture_path +
+                            " not drawn: only PNG textures are supported");
+               }
+             }
              if (wants(formats, "svg")) {
                for (std::size_t page = 0; page < layout.pages.size(); ++page) {
                  char name[32];
                  std::snprintf(name, sizeof name, "pattern-%02zu.svg", page + 1);
                  write_file_atomic(dir / name,
-                                   pattern_page_svg(layout, static_cast<int>(page), style));
+                                   pattern_page_svg(layout, static_cast<int>(page), page_style));
                }
              }
              if (wants(formats, "pdf")) {
-               StyleOptions pdf_style = style;
-               pdf_style.title = model.name;
-               if (strips.model && !strips.model->texture_path.empty()) {
-                 if (std::filesystem::path(strips.model->texture_path).extension() == ".png") {
-                   pdf_style.texture_path = strips.model->texture_path;
-                 } else {
-                   model.note("texture " + strips.model->texture_path +
-                              " not drawn: only PNG textures are supported");
-                 }
-               }
                write_via_temporary(dir / "pattern.pdf", [&](const std::filesystem::path& tmp) {
-                 write_pattern_pdf(layout, tmp, pdf_style);
+                 write_pattern_pdf(layout, tmp, page_style);
                });
              }
            }

@@ -7,10 +7,13 @@
 namespace papercraft {
 namespace {
 
+constexpr double kGentleMarkMm = 3.0;
+
 struct Pens {
   Pen cut, mountain, valley, print;
   std::string tab_fill;
   std::string text;
+  Pen gentle_mountain, gentle_valley;
 };
 
 Pens preset_pens(StylePreset preset) {
@@ -22,14 +25,18 @@ Pens preset_pens(StylePreset preset) {
               {"#0000ff", 0.025, {2.0, 1.0}},
               {"#000000", 0.1, {}},
               "",
-              "#000000"};
+              "#000000",
+              {"#8080ff", 0.025, {}},
+              {"#8080ff", 0.025, {0.5, 1.0}}};
     case StylePreset::Cutter:
       return {{"#000000", 0.1, {}},
               {"#00a000", 0.1, {3.0, 1.0, 0.6, 1.0}},
               {"#0080ff", 0.1, {1.5, 1.0}},
               {"#000000", 0.2, {}},
               "",
-              "#000000"};
+              "#000000",
+              {"#80d080", 0.1, {}},
+              {"#80c0ff", 0.1, {0.5, 1.0}}};
     case StylePreset::Print:
       break;
   }
@@ -38,7 +45,23 @@ Pens preset_pens(StylePreset preset) {
           {"#0050c0", 0.2, {1.5, 1.0}},
           {"#000000", 0.25, {}},
           "#e6e6e6",
-          "#000000"};
+          "#000000",
+          {"#e8a0a0", 0.12, {}},
+          {"#a0b8e8", 0.12, {0.6, 0.6}}};
+}
+
+// A gentle fold as two short marks where the ruling meets the piece's edges: enough to
+// show where to curve the paper without a line across every ruling.
+void add_gentle_marks(std::vector<std::vector<Vec2>>& polylines, const FoldLine& fold) {
+  const Vec2 d = fold.b - fold.a;
+  const double length = d.norm();
+  if (length <= 3 * kGentleMarkMm) {
+    polylines.push_back({fold.a, fold.b});
+    return;
+  }
+  const Vec2 step = d * (kGentleMarkMm / length);
+  polylines.push_back({fold.a, fold.a + step});
+  polylines.push_back({fold.b - step, fold.b});
 }
 
 }  // namespace
@@ -51,6 +74,26 @@ StylePreset style_preset_from_name(std::string_view name) {
   if (lower == "cutter") return StylePreset::Cutter;
   throw InvalidInputException("unknown style preset '" + std::string(name) +
                               "': use print, laser or cutter");
+}
+
+std::vector<TexturePatch> page_texture_patches(const Page& page) {
+  std::vector<TexturePatch> patches;
+  for (const PlacedPiece& piece : page.pieces) {
+    if (piece.uvs.size() == piece.vertices.size() && !piece.uvs.empty()) {
+      for (const Triangle& t : piece.triangles) {
+        TexturePatch patch;
+        for (int k = 0; k < 3; ++k) {
+          patch.corners[k] = piece.vertices[t[k]];
+          patch.uvs[k] = piece.uvs[t[k]];
+        }
+        patch.clip.assign(patch.corners.begin(), patch.corners.end());
+        patches.push_back(std::move(patch));
+      }
+    }
+    for (const Tab& tab : piece.tabs)
+      patches.insert(patches.end(), tab.texture.begin(), tab.texture.end());
+  }
+  return patches;
 }
 
 std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int page_index,
@@ -92,9 +135,22 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
     DrawPath outline{piece.cut_outline, true, true, pens.cut, ""};
     cut.paths.push_back(std::move(outline));
     DrawPath hills{{}, false, true, pens.mountain, ""}, dales{{}, false, true, pens.valley, ""};
-    for (const FoldLine& fold : piece.folds)
-      (fold.kind == FoldKind::Mountain ? hills : dales).polylines.push_back({fold.a, fold.b});
-    DrawPath flaps{{}, true, false, pens.print, pens.tab_fill};
+    DrawPath gentle_hills{{}, false, true, pens.gentle_mountain, ""};
+    DrawPath gentle_dales{{}, false, true, pens.gentle_valley, ""};
+    for (const FoldLine& fold : piece.folds) {
+      const bool mountain = fold.kind == FoldKind::Mountain;
+      if (fold.gentle)
+        add_gentle_marks((mountain ? gentle_hills : gentle_dales).polylines, fold);
+      else
+        (mountain ? hills : dales).polylines.push_back({fold.a, fold.b});
+    }
+    if (!gentle_hills.polylines.empty()) mountain.paths.push_back(std::move(gentle_hills));
+    if (!gentle_dales.polylines.empty()) valley.paths.push_back(std::move(gentle_dales));
+    bool textured_tabs = false;
+    if (!style.texture_path.empty())
+      for (const Tab& tab : piece.tabs) textured_tabs = textured_tabs || !tab.texture.empty();
+    // A textured tab shows the texture, not the grey fill; its outline is the cut line.
+    DrawPath flaps{{}, true, false, pens.print, textured_tabs ? "" : pens.tab_fill};
     for (const Tab& tab : piece.tabs) {
       for (const auto& base : tab.bases) hills.polylines.push_back(base);
       for (const auto& flap : tab.flaps) flaps.polylines.push_back(flap);

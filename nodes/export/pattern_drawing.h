@@ -9,6 +9,9 @@
 //   labels   seam labels and piece numbers
 //   valley   valley folds
 //   mountain mountain folds, including the fold at the base of every tab
+// A gentle fold (FoldLine::gentle, a slight bend at a ruling) is drawn in its layer with a
+// faint thin pen, only as short marks at its two ends: the page shows the creases that
+// matter and still tells where to curve the paper.
 //   cut      one closed path per piece: around the piece and its tabs (each boundary loop a
 //            subpath), so a cutter runs it in one go
 
@@ -34,7 +37,8 @@ struct StyleOptions {
   StylePreset preset = StylePreset::Print;
   std::string font_family = "sans-serif";
   std::string title;  // printed in the footer when not empty (the model's name)
-  /// A PNG texture drawn onto pieces that carry uvs (PDF only); empty: none.
+  /// A PNG texture drawn onto pieces that carry uvs and onto their tabs (in the print
+  /// layer; the tabs then go unfilled); empty: none.
   std::string texture_path;
 };
 
@@ -64,6 +68,10 @@ struct DrawLayer {
   std::vector<DrawPath> paths;
   std::vector<DrawText> texts;
 };
+
+/// The texture of a page: one patch per triangle of every piece with uvs (clipped to the
+/// triangle) and the patches of its tabs (TexturePatch in nodes/layout/pages.h).
+std::vector<TexturePatch> page_texture_patches(const Page& page);
 
 /// The layers of page `page_index` of `layout`, bottom first (see the file comment).
 /// \throws InvalidInputException if page_index is not a page of the layout.

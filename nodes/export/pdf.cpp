@@ -71,23 +71,25 @@ void draw_text(cairo_t* cr, const DrawText& text, const std::string& font) {
   cairo_restore(cr);
 }
 
-// Paints the texture onto every triangle of every piece that has uvs: each triangle gets
-// the affine map taking its uv corners (in texture pixels, v up) to its page corners.
+// Paints the page's texture patches: each gets the affine map taking its uv corners (in
+// texture pixels, v up) to its page corners, inside its clip polygon.
 void draw_texture(cairo_t* cr, cairo_surface_t* texture, const Page& page) {
   const double w = cairo_image_surface_get_width(texture);
   const double h = cairo_image_surface_get_height(texture);
   cairo_pattern_t* pattern = cairo_pattern_create_for_surface(texture);
   cairo_pattern_set_extend(pattern, CAIRO_EXTEND_PAD);
-  for (const PlacedPiece& piece : page.pieces) {
-    if (piece.uvs.size() != piece.vertices.size()) continue;
-    for (const Triangle& t : piece.triangles) {
-      Eigen::Matrix3d from, to;
+  for (const TexturePatch& patch : page_texture_patches(page)) {
+    if (patch.clip.size() < 3) continue;
+    Eigen::Matrix3d from, to;
+    {
       for (int k = 0; k < 3; ++k) {
-        const Vec2& uv = piece.uvs[t[k]];
+        const Vec2& uv = patch.uvs[k];
         from.col(k) << uv.x() * w, (1.0 - uv.y()) * h, 1.0;
-        to.col(k) << piece.vertices[t[k]].x(), piece.vertices[t[k]].y(), 1.0;
+        to.col(k) << patch.corners[k].x(), patch.corners[k].y(), 1.0;
       }
       if (std::abs(from.determinant()) < 1e-12 || std::abs(to.determinant()) < 1e-12) continue;
+    }
+    {
       const Eigen::Matrix3d page_to_texture = from * to.inverse();  // cairo: user -> pattern
       cairo_matrix_t matrix;
       cairo_matrix_init(&matrix, page_to_texture(0, 0), page_to_texture(1, 0),
@@ -95,9 +97,9 @@ void draw_texture(cairo_t* cr, cairo_surface_t* texture, const Page& page) {
                         page_to_texture(1, 2));
       cairo_pattern_set_matrix(pattern, &matrix);
       cairo_save(cr);
-      cairo_move_to(cr, to(0, 0), to(1, 0));
-      cairo_line_to(cr, to(0, 1), to(1, 1));
-      cairo_line_to(cr, to(0, 2), to(1, 2));
+      cairo_move_to(cr, patch.clip[0].x(), patch.clip[0].y());
+      for (std::size_t i = 1; i < patch.clip.size(); ++i)
+        cairo_line_to(cr, patch.clip[i].x(), patch.clip[i].y());
       cairo_close_path(cr);
       cairo_clip(cr);
       cairo_set_source(cr, pattern);

@@ -26,6 +26,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
 constexpr double kFitSlack = 1e-7;  // mm; rounding in rotations must not reject a fit
+// Text boxes: an advance of 0.6 em per character (sans-serif digits and capitals) and
+// 0.6 em either side of the centre line, as the exporters centre text.
+constexpr double kCharWidthEm = 0.6;
+constexpr double kHalfLineEm = 0.6;
 
 double cross(const Vec2& a, const Vec2& b) {
   return a.x() * b.y() - a.y() * b.x();
@@ -433,9 +437,10 @@ struct PieceEdge {
 };
 
 struct Flap {
-  std::vector<Vec2> base;   // p_a .. p_b+1, strip frame mm
-  std::vector<Vec2> outer;  // q_a .. q_b+1
-  int tab = -1;             // index into Piece::tabs
+  std::vector<Vec2> base;             // p_a .. p_b+1, strip frame mm
+  std::vector<Vec2> outer;            // q_a .. q_b+1
+  int tab = -1;                       // index into Piece::tabs
+  std::vector<TexturePatch> texture;  // strip frame mm
 };
 
 struct PieceTab {
@@ -448,6 +453,7 @@ struct PieceLabel {
   Vec2 position;
   Vec2 direction;
   double size;
+  int chain = -1;  // the seam chain it names
 };
 
 struct Piece {
@@ -459,6 +465,7 @@ struct Piece {
   std::vector<Flap> flaps;
   std::vector<PieceTab> tabs;
   std::vector<PieceLabel> labels;
+  std::optional<PieceLabel> number;  // set by arrange_labels
 };
 
 std::string strip_name(const FlatStrip& strip) {
@@ -643,7 +650,8 @@ std::vector<std::vector<int>> components(const StripData& data, const std::vecto
 }
 
 // Triangles of `set` in Dijkstra order (centroid distances over shared edges) from `seed`.
-std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& set, int seed) {
+std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& set, int seed,
+                                std::vector<double>* distances = nullptr) {
   const FlatStrip& strip = *data.strip;
   std::unordered_map<int, double> distance;
   for (int t : set) distance[t] = std::numeric_limits<double>::infinity();
@@ -663,6 +671,7 @@ std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& s
     if (done.count(t)) continue;
     done[t] = 1;
     order.push_back(t);
+    if (distances) distances->push_back(d);
     const Triangle& tri = strip.triangles[t];
     for (int i = 0; i < 3; ++i) {
       auto it = data.owner.find(edge_key(tri[(i + 1) % 3], tri[i]));
@@ -688,7 +697,10 @@ std::string unique_label(const std::string& wanted, std::set<std::string>& used)
 
 // Splits the strip into connected triangle sets each fitting width x height: a Dijkstra
 // prefix from one end of the set (a ruled strip is a path of triangles, so the cut is one
-// ruling), largest that fits, repeated on what is left.
+// ruling), repeated on what is left. The prefix is not the largest that fits (that leaves
+// a sliver at the end) but the one nearest 1/k of the set's length, where k is the number
+// of pieces the greedy split needs, among those that leave a rest still splittable into
+// k - 1 pieces: the pieces come out of similar length.
 std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double height,
                                            std::set<std::string>& used_labels) {
   std::vector<std::vector<int>> done;
@@ -709,14 +721,45 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double
       continue;
     }
     std::vector<int> from_first = dijkstra_order(data, set, set.front());
-    std::vector<int> order = dijkstra_order(data, set, from_first.back());
-    std::size_t lo = 1, hi = order.size() - 1;  // prefix `lo` fits or is a single triangle
-    while (lo < hi) {
-      const std::size_t mid = (lo + hi + 1) / 2;
-      if (fits(std::vector<int>(order.begin(), order.begin() + mid)))
-        lo = mid;
-      else
-        hi = mid - 1;
+    std::vector<double> distance;
+    std::vector<int> order = dijkstra_order(data, set, from_first.back(), &distance);
+    // The longest prefix of order[begin..] that fits (at least one triangle).
+    auto longest_fitting = [&](std::size_t begin) {
+      std::size_t lo = begin + 1, hi = order.size();
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi + 1) / 2;
+        if (fits(std::vector<int>(order.begin() + begin, order.begin() + mid)))
+          lo = mid;
+        else
+          hi = mid - 1;
+      }
+      return lo;
+    };
+    auto greedy_count = [&](std::size_t begin) {
+      int count = 0;
+      for (; begin < order.size(); ++count) begin = longest_fitting(begin);
+      return count;
+    };
+    std::size_t lo = std::min(longest_fitting(0), order.size() - 1);
+    const int pieces = greedy_count(0);
+    if (pieces >= 2 && lo > 1) {
+      // Smallest cut whose rest still splits into pieces - 1 (the count only falls as the
+      // cut moves on), then the cut nearest 1/pieces of the length within [first, lo].
+      std::size_t first = 1, last = lo;
+      while (first < last) {
+        const std::size_t mid = (first + last) / 2;
+        if (greedy_count(mid) <= pieces - 1)
+          last = mid;
+        else
+          first = mid + 1;
+      }
+      const double target = distance.back() / pieces;
+      std::size_t cut =
+          std::lower_bound(distance.begin(), distance.end(), target) - distance.begin();
+      cut = std::clamp(cut, first, lo);
+      if (cut < lo && fits(std::vector<int>(order.begin(), order.begin() + cut)) &&
+          components(data, std::vector<int>(order.begin() + cut, order.end())).size() == 1)
+        lo = cut;
     }
     std::vector<int> head(order.begin(), order.begin() + lo);
     std::sort(head.begin(), head.end());
@@ -984,7 +1027,9 @@ std::vector<Vec2> clip(const std::vector<Vec2>& polygon,
 // `outer` to the flap's outer chain; empty if a slice would be degenerate or not convex.
 std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double h,
                                            double start_angle, double end_angle,
-                                           std::vector<Vec2>* outer) {
+                                           std::vector<Vec2>* outer,
+                                           std::vector<int>* slice_edges) {
+  slice_edges->clear();
   const std::size_t k = base.size() - 1;
   std::vector<Vec2> d(k), n(k), offset(k + 1);
   for (std::size_t i = 0; i < k; ++i) {
@@ -1008,7 +1053,10 @@ std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double
       if (e1.norm() < 1e-9 || cross(e1, e2) <= 1e-9 * e1.norm() * e2.norm()) return {};
     }
     std::vector<Vec2> slice = clip(clip(quad, after_start), before_end);
-    if (slice.size() >= 3 && std::abs(signed_area(slice)) > 1e-12) slices.push_back(slice);
+    if (slice.size() >= 3 && std::abs(signed_area(slice)) > 1e-12) {
+      slices.push_back(slice);
+      slice_edges->push_back(static_cast<int>(j));
+    }
   }
   std::vector<Vec2> band(base.rbegin(), base.rend());
   band.insert(band.end(), offset.begin(), offset.end());
@@ -1045,6 +1093,7 @@ struct FlapPlan {
   std::vector<Vec2> base;
   std::vector<Vec2> outer;
   std::vector<std::vector<Vec2>> slices;
+  std::vector<int> slice_edges;  // index into `edges` of each slice's base edge
 };
 
 // Flaps along a chain: one per nearly straight run of edges (a flap cannot fold along a
@@ -1145,10 +1194,12 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       const double h = h0 * factor;
       if (h < geometry.min_height) break;
       std::vector<Vec2> outer;
-      auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer);
+      std::vector<int> slice_edges;
+      auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer, &slice_edges);
       if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
       plan.outer = std::move(outer);
       plan.slices = std::move(slices);
+      plan.slice_edges = std::move(slice_edges);
       break;
     }
     if (plan.slices.empty()) continue;
@@ -1182,13 +1233,20 @@ double chain_length(const StripData& data, const Piece& piece, const Chain& chai
 }
 
 void commit_flaps(Piece& piece, const Chain& chain, const std::string& printed,
-                  std::vector<FlapPlan>& plans) {
+                  std::vector<FlapPlan>& plans,
+                  const std::function<std::optional<TexturePatch>(int)>& edge_texture) {
   PieceTab tab;
   tab.label = printed;
   const int tab_index = static_cast<int>(piece.tabs.size());
   for (FlapPlan& plan : plans) {
     const int flap_index = static_cast<int>(piece.flaps.size());
-    piece.flaps.push_back({plan.base, plan.outer, tab_index});
+    Flap flap{plan.base, plan.outer, tab_index, {}};
+    for (std::size_t k = 0; k < plan.slices.size(); ++k)
+      if (auto patch = edge_texture(plan.edges[plan.slice_edges[k]])) {
+        patch->clip = plan.slices[k];
+        flap.texture.push_back(std::move(*patch));
+      }
+    piece.flaps.push_back(std::move(flap));
     tab.flaps.push_back(flap_index);
     for (std::size_t i = 0; i < plan.edges.size(); ++i) {
       PieceEdge& edge = piece.loops[chain.loop][plan.edges[i]];
@@ -1243,7 +1301,7 @@ PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& c
 // Folds and numbers.
 
 std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
-                                  double threshold_degrees) {
+                                  double threshold_degrees, double strong_degrees) {
   const FlatStrip& strip = *data.strip;
   std::unordered_map<int, char> in_piece;
   for (int t : piece.triangles) in_piece[t] = 1;
@@ -1267,8 +1325,9 @@ std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
           std::acos(std::clamp(n1.normalized().dot(n2.normalized()), -1.0, 1.0)) / kDegree;
       if (bend <= threshold_degrees) continue;
       const bool convex = (strip.vertices3d[d] - pa).dot(n1) < 0;
-      folds.push_back(
-          {data.points[a], data.points[b], convex ? FoldKind::Mountain : FoldKind::Valley, bend});
+      folds.push_back({data.points[a], data.points[b],
+                       convex ? FoldKind::Mountain : FoldKind::Valley, bend,
+                       bend < strong_degrees});
     }
   }
   return folds;
@@ -1313,6 +1372,117 @@ double upright_degrees(const Vec2& page_direction) {
   return angle;
 }
 
+PieceLabel piece_number(const StripData& data, const Piece& piece, const OrientedBox& box,
+                        const LayoutOptions& options) {
+  auto [centre, radius] = number_spot(data, piece);
+  PieceLabel number;
+  number.text = std::to_string(data.strip->id);
+  if (piece.count > 1) number.text += "." + std::to_string(piece.index + 1);
+  number.position = centre;
+  number.size = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
+  number.direction = Vec2(std::cos(box.angle), std::sin(box.angle));
+  return number;
+}
+
+std::array<Vec2, 4> text_box(const Vec2& centre, const Vec2& direction, double size,
+                             std::size_t characters) {
+  const Vec2 along = direction.normalized() * (0.5 * kCharWidthEm * size * characters + 0.1 * size);
+  const Vec2 across = Vec2(-direction.y(), direction.x()).normalized() * (kHalfLineEm * size);
+  return {centre - along - across, centre + along - across, centre + along + across,
+          centre - along + across};
+}
+
+bool inside_triangles(const Vec2& p, const PieceShapes& shapes) {
+  for (std::size_t t = 0; t < shapes.triangles.size(); ++t) {
+    const Box2& box = shapes.triangle_boxes[t];
+    if (p.x() < box.lo.x() - 1e-9 || p.x() > box.hi.x() + 1e-9 || p.y() < box.lo.y() - 1e-9 ||
+        p.y() > box.hi.y() + 1e-9)
+      continue;
+    const auto& c = shapes.triangles[t];
+    const double scale = 1e-9 * (box.hi - box.lo).squaredNorm();
+    if (cross(c[1] - c[0], p - c[0]) >= -scale && cross(c[2] - c[1], p - c[1]) >= -scale &&
+        cross(c[0] - c[2], p - c[2]) >= -scale)
+      return true;
+  }
+  return false;
+}
+
+// A text box lies on the piece: its corners and edge midpoints are on triangles of it.
+bool box_on_piece(const std::array<Vec2, 4>& box, const PieceShapes& shapes) {
+  for (int i = 0; i < 4; ++i) {
+    if (!inside_triangles(box[i], shapes)) return false;
+    if (!inside_triangles(0.5 * (box[i] + box[(i + 1) % 4]), shapes)) return false;
+  }
+  return inside_triangles(0.25 * (box[0] + box[1] + box[2] + box[3]), shapes);
+}
+
+// Moves each seam label along its chain (and shrinks it, down to 1.2 mm) until its text box
+// lies on the piece and clear of the piece number and the labels placed before it; a label
+// that finds no such spot keeps its first one. The number stays where number_spot puts it.
+void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
+                    const OrientedBox& box, const LayoutOptions& options) {
+  const PieceShapes shapes = piece_shapes(data, piece);
+  piece.number = piece_number(data, piece, box, options);
+  std::vector<std::array<Vec2, 4>> taken;
+  taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                           piece.number->text.size()));
+  auto clear = [&](const std::array<Vec2, 4>& candidate) {
+    for (const auto& other : taken)
+      if (convex_overlap(candidate.data(), 4, other.data(), 4, 0.0)) return false;
+    return true;
+  };
+  for (PieceLabel& label : piece.labels) {
+    if (label.chain < 0) continue;
+    const Chain& chain = chains[label.chain];
+    const auto& loop = piece.loops[chain.loop];
+    const double total = chain_length(data, piece, chain);
+    auto point_at = [&](double at, Vec2* direction) {
+      double walked = 0;
+      for (int i = 0; i < chain.count; ++i) {
+        const PieceEdge& e = loop[(chain.start + i) % loop.size()];
+        const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+        const double length = (b - a).norm();
+        if (length <= 0) continue;
+        if (walked + length >= at || i == chain.count - 1) {
+          *direction = (b - a) / length;
+          return Vec2(a + std::clamp((at - walked) / length, 0.0, 1.0) * (b - a));
+        }
+        walked += length;
+      }
+      *direction = Vec2::UnitX();
+      return label.position;
+    };
+    bool placed = false;
+    const auto first_box = text_box(label.position, label.direction, label.size, label.text.size());
+    if (box_on_piece(first_box, shapes) && clear(first_box)) {
+      taken.push_back(first_box);
+      continue;
+    }
+    for (double size : {label.size, 0.8 * label.size, 0.65 * label.size, 0.5 * label.size}) {
+      if (size < std::min(1.2, label.size) - 1e-12) break;
+      for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.05, 0.95}) {
+        for (double gap : {0.6, 0.3, 1.2}) {
+          Vec2 direction;
+          const Vec2 on_edge = point_at(fraction * total, &direction);
+          const Vec2 centre =
+              on_edge + Vec2(-direction.y(), direction.x()) * (kHalfLineEm * size + gap);
+          const auto candidate = text_box(centre, direction, size, label.text.size());
+          if (!box_on_piece(candidate, shapes) || !clear(candidate)) continue;
+          label.position = centre;
+          label.direction = direction;
+          label.size = size;
+          taken.push_back(candidate);
+          placed = true;
+          break;
+        }
+        if (placed) break;
+      }
+      if (placed) break;
+    }
+    if (!placed) taken.push_back(first_box);
+  }
+}
+
 void validate_options(const LayoutOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!(v > 0) || !std::isfinite(v))
@@ -1329,6 +1499,7 @@ void validate_options(const LayoutOptions& o) {
   non_negative(o.scale, "scale");
   non_negative(o.tab_width_mm, "tab_width_mm");
   non_negative(o.fold_angle_degrees, "fold_angle_degrees");
+  non_negative(o.strong_fold_angle_degrees, "strong_fold_angle_degrees");
   non_negative(o.spacing_mm, "spacing_mm");
   positive(o.label_size_mm, "label_size_mm");
   positive(o.number_size_mm, "number_size_mm");
@@ -1449,9 +1620,59 @@ ChainKey chain_key(const Chain& c, const std::vector<Piece>& pieces,
   return {strips[piece.strip].strip->id, piece.index, c.loop, c.start};
 }
 
+// The texture for a tab along loop edge `edge` of `piece`'s loop `loop`, the tab lying on
+// the edge's right. A tab is glued under the neighbouring piece, so it shows what continues
+// there: the partner triangle across the seam, unfolded onto the tab's side (its own uvs,
+// which also carries the texture across a uv seam of the atlas). Without a partner (or
+// partner uvs), the piece's own triangle at the edge, its affine map extended.
+std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
+                                        const std::vector<StripData>& strips,
+                                        const SeamEdges& seams, int piece_index, int loop,
+                                        int edge) {
+  const Piece& piece = pieces[piece_index];
+  const StripData& data = strips[piece.strip];
+  const PieceEdge& e = piece.loops[loop][edge];
+  const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+  auto third = [](const FlatStrip& strip, int t, int u, int v) {
+    for (int w : strip.triangles[t])
+      if (w != u && w != v) return w;
+    return -1;
+  };
+  const int id = seams.id[piece_index][loop][edge];
+  const int partner = id >= 0 ? seams.partner[id] : -1;
+  if (partner >= 0) {
+    const auto [p2, l2, i2] = seams.refs[partner];
+    const StripData& other = strips[pieces[p2].strip];
+    const PieceEdge& f = pieces[p2].loops[l2][i2];
+    const FlatStrip& strip2 = *other.strip;
+    auto owner = other.owner.find(edge_key(f.v0, f.v1));
+    if (!strip2.uvs.empty() && owner != other.owner.end()) {
+      const int d = third(strip2, owner->second, f.v0, f.v1);
+      const Vec2 p0 = other.points[f.v0], p1 = other.points[f.v1], q = other.points[d];
+      const double length = (p1 - p0).norm(), own_length = (a - b).norm();
+      if (d >= 0 && length > 0 && own_length > 0) {
+        // f runs v0 -> v1 glued to this edge's v1 -> v0: the same frame along (b -> a).
+        const Vec2 along = (p1 - p0) / length, own_along = (a - b) / own_length;
+        const double s = (q - p0).dot(along), t = cross(along, q - p0);
+        const Vec2 unfolded = b + s * own_along + t * Vec2(-own_along.y(), own_along.x());
+        return TexturePatch{
+            {b, a, unfolded}, {strip2.uvs[f.v0], strip2.uvs[f.v1], strip2.uvs[d]}, {}};
+      }
+    }
+  }
+  const FlatStrip& strip = *data.strip;
+  if (strip.uvs.empty()) return std::nullopt;
+  auto owner = data.owner.find(edge_key(e.v0, e.v1));
+  if (owner == data.owner.end()) return std::nullopt;
+  const int c = third(strip, owner->second, e.v0, e.v1);
+  if (c < 0) return std::nullopt;
+  return TexturePatch{{a, b, data.points[c]}, {strip.uvs[e.v0], strip.uvs[e.v1], strip.uvs[c]}, {}};
+}
+
 void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
               const std::vector<Chain>& chains, const std::vector<SeamPair>& pairs,
-              const LayoutOptions& options, std::vector<std::string>& warnings) {
+              const SeamEdges& seams, const LayoutOptions& options,
+              std::vector<std::string>& warnings) {
   const TabGeometry geometry{options.tab_width_mm, options.tab_angle_degrees * kDegree,
                              std::min(1.0, 0.2 * options.tab_width_mm), 1e-6};
   std::vector<std::optional<PieceShapes>> shapes(pieces.size());
@@ -1500,7 +1721,9 @@ void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
         piece_shapes_.slices.push_back(slice);
         piece_shapes_.slice_boxes.push_back(box);
       }
-    commit_flaps(pieces[chain.piece], chain, pair.printed, best_plans);
+    commit_flaps(pieces[chain.piece], chain, pair.printed, best_plans, [&](int edge) {
+      return tab_texture(pieces, strips, seams, chain.piece, chain.loop, edge);
+    });
   }
 }
 
@@ -1574,7 +1797,8 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
     placed.outline.push_back(std::move(outline));
     placed.cut_outline.push_back(std::move(cut));
   }
-  for (FoldLine fold : piece_folds(data, piece, options.fold_angle_degrees)) {
+  for (FoldLine fold :
+       piece_folds(data, piece, options.fold_angle_degrees, options.strong_fold_angle_degrees)) {
     fold.a = to_page(fold.a);
     fold.b = to_page(fold.b);
     placed.folds.push_back(fold);
@@ -1591,18 +1815,20 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
       for (const Vec2& p : flap.base) base.push_back(to_page(p));
       tab.flaps.push_back(std::move(polygon));
       tab.bases.push_back(std::move(base));
+      for (TexturePatch patch : flap.texture) {
+        for (Vec2& corner : patch.corners) corner = to_page(corner);
+        for (Vec2& point : patch.clip) point = to_page(point);
+        tab.texture.push_back(std::move(patch));
+      }
     }
     placed.tabs.push_back(std::move(tab));
   }
   for (const PieceLabel& label : piece.labels)
     placed.labels.push_back(
         {label.text, to_page(label.position), direction_degrees(label.direction), label.size});
-  auto [centre, radius] = number_spot(data, piece);
-  placed.number.text = std::to_string(strip.id);
-  if (piece.count > 1) placed.number.text += "." + std::to_string(piece.index + 1);
-  placed.number.position = to_page(centre);
-  placed.number.size_mm = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
-  placed.number.angle_degrees = direction_degrees(Vec2(std::cos(box.angle), std::sin(box.angle)));
+  const PieceLabel number = piece.number ? *piece.number : piece_number(data, piece, box, options);
+  placed.number = {number.text, to_page(number.position), direction_degrees(number.direction),
+                   number.size};
   return placed;
 }
 
@@ -1707,9 +1933,10 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
         loop[(chain.start + i) % loop.size()].printed = pair.printed;
       piece.labels.push_back(
           chain_label(p.strips[piece.strip], piece, chain, pair.printed, options.label_size_mm));
+      piece.labels.back().chain = side;
     }
   }
-  if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, options, warnings);
+  if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);
 
   std::vector<Orientation> orientations;
   std::vector<int> packed, oversized;
@@ -1717,6 +1944,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
     orientations.push_back(orient_piece(p.strips[pieces[i].strip], pieces[i], p.area));
     const Orientation& o = orientations.back();
+    arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, o.box, options);
     if (o.fits && o.box.size.minCoeff() > 0) {
       packed.push_back(i);
       sizes.push_back(o.box.size);
@@ -1756,6 +1984,12 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     add_page_furniture(layout.pages[i], i, static_cast<int>(layout.pages.size()), options,
                        p.mm_per_unit);
   return layout;
+}
+
+std::array<Vec2, 4> label_box(const Label& label) {
+  const double angle = label.angle_degrees * kDegree;
+  return text_box(label.position, Vec2(std::cos(angle), std::sin(angle)), label.size_mm,
+                  label.text.size());
 }
 
 std::vector<PackedRectangle> pack_rectangles(const std::vector<Vec2>& sizes, double bin_width,

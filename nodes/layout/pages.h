@@ -16,7 +16,10 @@
 // - Fold lines: an inner edge whose bend angle (between the normals of its two triangles,
 //   computed from vertices3d) exceeds fold_angle_degrees. A convex edge (the model bulges
 //   outward there) is a Mountain fold seen from the printed side; a concave one a Valley.
-//   A tab folds behind the printed side, so its base is a mountain fold too.
+//   A tab folds behind the printed side, so its base is a mountain fold too. A fold bent
+//   less than strong_fold_angle_degrees is `gentle`: a smooth strip bends a little at
+//   every ruling, and those lines only tell a person to curve the paper there, so
+//   exporters draw them faint and short (see nodes/export/pattern_drawing.h).
 // - Tabs go on one side of every seam: the side whose piece comes first in order
 //   (strip id, piece index, position on the piece's boundary). If that side has no room
 //   (the tab would cover its own piece or another tab even when shrunk), the other side
@@ -24,6 +27,7 @@
 //
 // Example (node config): layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}}
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -60,10 +64,13 @@ struct LayoutOptions {
   double tab_width_mm = 5.0;        // 0: no tabs
   double tab_angle_degrees = 45.0;  // angle between a tab's ends and its seam edge
   double fold_angle_degrees = 0.5;  // bend angle above which an inner edge is a fold line
-  double spacing_mm = 2.0;          // gap between the bounding boxes of pieces
-  double label_size_mm = 2.5;       // seam label text height
-  double number_size_mm = 4.0;      // piece number text height (smaller on thin pieces)
-  double footer_mm = 8.0;           // band at the bottom of the printable area: scale bar
+  /// Bend angle from which a fold line is a real crease (drawn in full mountain/valley
+  /// style); folds between fold_angle_degrees and this are gentle bends.
+  double strong_fold_angle_degrees = 10.0;
+  double spacing_mm = 2.0;      // gap between the bounding boxes of pieces
+  double label_size_mm = 2.5;   // seam label text height
+  double number_size_mm = 4.0;  // piece number text height (smaller on thin pieces)
+  double footer_mm = 8.0;       // band at the bottom of the printable area: scale bar
   PackingMethod packing = PackingMethod::MaxRects;
 };
 
@@ -83,6 +90,15 @@ struct FoldLine {
   Vec2 b = Vec2::Zero();
   FoldKind kind = FoldKind::Mountain;
   double bend_degrees = 0.0;  // 0 = flat, 90 = a cube edge
+  bool gentle = false;        // bend_degrees < strong_fold_angle_degrees: curve, do not crease
+};
+
+/// A piece of texture: the affine map taking `uvs` (texture coordinates in [0, 1], v up)
+/// to `corners` (page mm), painted inside the convex polygon `clip` (page mm).
+struct TexturePatch {
+  std::array<Vec2, 3> corners;
+  std::array<Vec2, 3> uvs;
+  std::vector<Vec2> clip;
 };
 
 /// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per
@@ -93,6 +109,9 @@ struct Tab {
   std::string label;
   std::vector<std::vector<Vec2>> flaps;
   std::vector<std::vector<Vec2>> bases;
+  /// Where the strips have uvs: per flap and base edge, the texture continuing across the
+  /// seam (the partner triangle unfolded onto the tab), clipped to the flap.
+  std::vector<TexturePatch> texture;
 };
 
 /// A boundary edge of a placed piece in page mm, the piece on its left as a reader sees it.
@@ -190,6 +209,12 @@ double layout_scale(const std::vector<FlatStrip>& strips, const LayoutOptions& o
 /// \throws InvalidInputException as layout_pages does.
 std::vector<int> strips_exceeding_page(const std::vector<FlatStrip>& strips,
                                        const LayoutOptions& options);
+
+/// The box the layout keeps clear for a label's text (corners in page mm, counter-clockwise
+/// in the label's frame): 0.6 em per character plus 0.1 em each end, 1.2 em high. Labels on
+/// a page do not overlap these boxes, and a seam label's box lies on its piece where the
+/// piece has room (else it keeps its place at the seam's middle).
+std::array<Vec2, 4> label_box(const Label& label);
 
 /// Where pack_rectangles put one rectangle: its page and its top-left corner in the bin;
 /// `rotated` when it lies with its width along y.

@@ -25,6 +25,8 @@ void register_layout_pages(Registry& registry) {
         {"tab_width_mm", ParamType::Number, "5", "glue tab width (0: no tabs)"},
         {"fold_angle_degrees", ParamType::Number, "0.5",
          "inner edges bent more than this get a fold line"},
+        {"strong_fold_angle_degrees", ParamType::Number, "10",
+         "folds bent less than this are drawn as faint gentle-bend marks"},
         {"spacing_mm", ParamType::Number, "2", "gap between pieces"},
         {"packing", ParamType::String, "maxrects", "maxrects or shelf", {"maxrects", "shelf"}}},
        [](const Params& params) {
@@ -38,6 +40,7 @@ void register_layout_pages(Registry& registry) {
          options.height_mm = params.number("height_mm");
          options.tab_width_mm = params.number("tab_width_mm");
          options.fold_angle_degrees = params.number("fold_angle_degrees");
+         options.strong_fold_angle_degrees = params.number("strong_fold_angle_degrees");
          options.spacing_mm = params.number("spacing_mm");
          options.packing =
              params.string("packing") == "shelf" ? PackingMethod::Shelf : PackingMethod::MaxRects;

@@ -169,6 +169,24 @@ TEST(ExportSvg, PresetsChangeColoursAndDashes) {
   EXPECT_THROW(style_preset_from_name("plotter"), InvalidInputException);
 }
 
+// A gentle fold (a slight bend) is two short faint marks at the ruling's ends; a strong
+// one a full dash-dot line.
+TEST(ExportSvg, GentleFoldsAreShortFaintMarks) {
+  PatternLayout layout;
+  layout.pages.resize(1);
+  PlacedPiece piece;
+  piece.folds.push_back({Vec2(10, 10), Vec2(10, 50), FoldKind::Mountain, 2.0, true});
+  piece.folds.push_back({Vec2(30, 10), Vec2(30, 50), FoldKind::Mountain, 20.0, false});
+  layout.pages[0].pieces.push_back(piece);
+  const std::string mountain = layer(pattern_page_svg(layout, 0), "mountain");
+  EXPECT_NE(mountain.find("d=\"M10,10 L10,13 M10,47 L10,50\" fill=\"none\" stroke=\"#e8a0a0\""),
+            std::string::npos)
+      << mountain;
+  EXPECT_NE(mountain.find("d=\"M30,10 L30,50\" fill=\"none\" stroke=\"#c00000\""),
+            std::string::npos)
+      << mountain;
+}
+
 TEST(ExportSvg, TextIsEscaped) {
   std::vector<FlatStrip> strips = {cell_strip(0, 2, 1, 20, 10), cell_strip(1, 2, 1, 20, 10)};
   mark_seam(strips[0], "a<b&\"c\"", 1, [](const Vec2& m) { return m.y() == 0; });

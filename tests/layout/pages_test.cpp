@@ -116,6 +116,23 @@ bool boxes_overlap(const Shape& a, const Shape& b) {
 }
 
 // Every invariant a layout promises (pages_test's contract with layout_pages).
+// On a triangle of the piece or a flap of its tabs (borders included, to 1e-6 mm).
+bool on_piece(const Vec2& p, const PlacedPiece& piece) {
+  constexpr double kSlack = 1e-6;
+  for (const Triangle& t : piece.triangles) {
+    const Vec2 &a = piece.vertices[t[0]], &b = piece.vertices[t[1]], &c = piece.vertices[t[2]];
+    const double s = cross(b - a, c - a) < 0 ? -1.0 : 1.0;  // page triangles are clockwise
+    if (s * cross(b - a, p - a) >= -kSlack * (b - a).norm() &&
+        s * cross(c - b, p - b) >= -kSlack * (c - b).norm() &&
+        s * cross(a - c, p - c) >= -kSlack * (a - c).norm())
+      return true;
+  }
+  for (const Tab& tab : piece.tabs)
+    for (const auto& flap : tab.flaps)
+      if (strictly_inside(p, flap, -kSlack)) return true;
+  return false;
+}
+
 void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStrip>& strips,
                          const LayoutOptions& options) {
   const double x0 = options.margin_mm - kEps, y0 = options.margin_mm - kEps;
@@ -206,6 +223,31 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
         }
       shapes.push_back(std::move(mine));
     }
+    // No two label boxes (seam labels and piece numbers) overlap, and every seam label lies
+    // on its piece.
+    std::vector<std::array<Vec2, 4>> boxes;
+    std::vector<std::string> names;
+    for (const PlacedPiece& piece : page.pieces) {
+      for (const Label& label : piece.labels) {
+        boxes.push_back(label_box(label));
+        names.push_back(label.text);
+        const auto& box = boxes.back();
+        for (int i = 0; i < 4; ++i)
+          for (const Vec2& point : {box[i], Vec2(0.5 * (box[i] + box[(i + 1) % 4]))})
+            EXPECT_TRUE(on_piece(point, piece))
+                << "label " << label.text << " of strip " << piece.strip_id
+                << " leaves its piece at " << point.transpose();
+      }
+      boxes.push_back(label_box(piece.number));
+      names.push_back(piece.number.text);
+    }
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+      for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+        std::vector<Vec2> pa(boxes[a].begin(), boxes[a].end()),
+            pb(boxes[b].begin(), boxes[b].end());
+        EXPECT_FALSE(polygons_overlap(pa, pb))
+            << "labels " << names[a] << " and " << names[b] << " overlap on page " << p;
+      }
     // No two pieces (with their tabs) overlap.
     for (std::size_t a = 0; a < shapes.size(); ++a)
       for (std::size_t b = a + 1; b < shapes.size(); ++b)
@@ -358,10 +400,56 @@ TEST(LayoutPages, FoldThresholdAndDirection) {
   ASSERT_EQ(folds.size(), 1u);
   EXPECT_EQ(folds[0].kind, FoldKind::Valley);
   EXPECT_NEAR(folds[0].bend_degrees, 0.3, 1e-6);
+  EXPECT_TRUE(folds[0].gentle);
   folds = layout_pages(bent(-30), options).pages[0].pieces[0].folds;
   ASSERT_EQ(folds.size(), 1u);
   EXPECT_EQ(folds[0].kind, FoldKind::Mountain);
   EXPECT_NEAR(folds[0].bend_degrees, 30, 1e-6);
+  EXPECT_FALSE(folds[0].gentle);
+  options.strong_fold_angle_degrees = 45;
+  EXPECT_TRUE(layout_pages(bent(-30), options).pages[0].pieces[0].folds.at(0).gentle);
+}
+
+// Two flat strips glued along y = 0 in 3D, each with its own uv offset (as across a uv
+// seam of an atlas): a tab shows the partner's texture where the partner would lie.
+TEST(LayoutPages, TabTextureContinuesThePartnerStrip) {
+  std::vector<FlatStrip> strips = {cell_strip(0, 2, 1, 20, 10), cell_strip(1, 2, 1, 20, 10)};
+  mark_seam(strips[0], "s", 1, [](const Vec2& m) { return m.y() == 0; });
+  mark_seam(strips[1], "s", 0, [](const Vec2& m) { return m.y() == 10; });
+  auto uv_of = [](int strip, const Vec2& p3d) {
+    return Vec2(p3d.x() / 40 + 0.5 * strip, (p3d.y() + 10) / 20);
+  };
+  for (int k = 0; k < 2; ++k)
+    for (std::size_t v = 0; v < strips[k].vertices3d.size(); ++v) {
+      strips[k].vertices3d[v].y() -= 10 * k;
+      strips[k].uvs.push_back(uv_of(k, strips[k].vertices3d[v].head<2>()));
+    }
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  int patches = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces)
+      for (const Tab& tab : piece.tabs)
+        for (const TexturePatch& patch : tab.texture) {
+          ++patches;
+          Eigen::Matrix3d from, to;
+          for (int k = 0; k < 3; ++k) {
+            from.col(k) << patch.uvs[k], 1.0;
+            to.col(k) << patch.corners[k], 1.0;
+          }
+          const Eigen::Matrix3d page_to_uv = from * to.inverse();
+          Vec2 centre = Vec2::Zero();
+          for (const Vec2& c : patch.clip) centre += c / static_cast<double>(patch.clip.size());
+          const Vec2 uv = (page_to_uv * Eigen::Vector3d(centre.x(), centre.y(), 1)).head<2>();
+          // The flat continuation of the piece's own strip frame, in 3D.
+          const Vec2 frame =
+              piece.transform.linear.inverse() * (centre - piece.transform.translation);
+          const Vec2 p3d = frame - Vec2(0, 10 * piece.strip_id);
+          const Vec2 expected = uv_of(1 - piece.strip_id, p3d);
+          EXPECT_NEAR((uv - expected).norm(), 0, 1e-9) << uv.transpose();
+        }
+  EXPECT_GE(patches, 2);  // one per seam edge under the tab
 }
 
 TEST(LayoutPages, OpenEdgesGetNoTabsOrLabels) {
@@ -400,6 +488,15 @@ TEST(LayoutPages, LongStripIsSplitAtRulingsIntoPiecesThatFit) {
       }
   }
   EXPECT_EQ(numbers, (std::set<std::string>{"7.1", "7.2", "7.3"}));
+  // Balanced: about 200 mm each, not two full pages and a 90 mm remainder (greedy).
+  for (const PlacedPiece* piece : pieces) {
+    Vec2 lo = piece->vertices[0], hi = lo;
+    for (const Vec2& v : piece->vertices) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+    EXPECT_GE((hi - lo).maxCoeff(), 0.5 * (297 - 2 * options.margin_mm)) << piece->number.text;
+  }
   EXPECT_EQ(seam_edges.size(), 2u);
   for (const auto& [label, count] : seam_edges) EXPECT_EQ(count, 2) << label;
   ASSERT_FALSE(layout.warnings.empty());
@@ -415,7 +512,19 @@ TEST(LayoutPages, CurvedStripIsSplitIntoPiecesThatFit) {
   options.scale = 1;
   const PatternLayout layout = layout_pages(strips, options);
   expect_valid_layout(layout, strips, options);
-  EXPECT_GE(pieces_of(layout, 2).size(), 2u);
+  const auto pieces = pieces_of(layout, 2);
+  ASSERT_GE(pieces.size(), 2u);
+  // Balanced: no piece is a sliver next to the others.
+  std::vector<double> areas;
+  for (const PlacedPiece* piece : pieces) {
+    double area = 0;
+    for (const Triangle& t : piece->triangles)
+      area += 0.5 * std::abs(cross(piece->vertices[t[1]] - piece->vertices[t[0]],
+                                   piece->vertices[t[2]] - piece->vertices[t[0]]));
+    areas.push_back(area);
+  }
+  EXPECT_GE(*std::min_element(areas.begin(), areas.end()),
+            0.6 * *std::max_element(areas.begin(), areas.end()));
 }
 
 // A U-shaped piece whose slot walls are glued to each other: the tab shrinks to fit in a
