@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -197,12 +198,17 @@ bool consistently_oriented(const std::vector<Triangle>& triangles) {
 }
 
 // Welding snaps y's seam vertices onto x's; a thin triangle next to the seam must not flip.
+// Triangles far below the strip's size have a rounding-decided orientation and are not
+// judged (the layout skips them the same way).
 bool counter_clockwise(const FlatStrip& strip) {
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const Vec2& p : strip.vertices2d) low = low.cwiseMin(p), high = high.cwiseMax(p);
+  const double negligible = strip.vertices2d.empty() ? 0.0 : 1e-12 * (high - low).squaredNorm();
   for (const Triangle& t : strip.triangles) {
     const Vec2& a = strip.vertices2d[t[0]];
     const Vec2 e1 = strip.vertices2d[t[1]] - a, e2 = strip.vertices2d[t[2]] - a;
     const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()});
-    if (e1.x() * e2.y() - e1.y() * e2.x() < -1e-10 * longest) return false;
+    if (longest > negligible && e1.x() * e2.y() - e1.y() * e2.x() < -1e-10 * longest) return false;
   }
   return true;
 }

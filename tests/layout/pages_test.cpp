@@ -654,6 +654,35 @@ TEST(LayoutPages, OversizedTriangleOverflowsWithWarning) {
   EXPECT_TRUE(overflow);
 }
 
+// Cuts that meet near a vertex can leave a triangle many orders of magnitude below the
+// strip's size; rounding decides its orientation, and it must not fail the model.
+TEST(LayoutPages, VanishingSliverDoesNotFailTheLayout) {
+  LayoutOptions options;
+  options.scale = 1;
+  FlatStrip strip;
+  strip.id = 0;
+  strip.source_strip = 0;
+  // A (pushed past the segment E-F by 1e-11 mm, so A-E-F turns clockwise), E, B, C, D, F.
+  const std::vector<Vec2> points = {{2e-11, 2e-11}, {1e-11, 0}, {10, 0},
+                                    {10, 10},       {0, 10},    {0, 1e-11}};
+  for (const Vec2& p : points) {
+    strip.vertices2d.push_back(p);
+    strip.vertices3d.emplace_back(p.x(), p.y(), 0.0);
+  }
+  strip.triangles = {{0, 1, 5}, {1, 2, 3}, {1, 3, 5}, {5, 3, 4}};
+  strip.boundary = testing::open_boundary(strip.triangles);
+  const Vec2 e1 = points[1] - points[0], e2 = points[5] - points[0];
+  ASSERT_LT(e1.x() * e2.y() - e1.y() * e2.x(), 0.0);  // the sliver really is clockwise
+  EXPECT_NO_THROW(layout_pages({strip}, options));
+
+  // The same reversal at a visible size is still refused.
+  FlatStrip visible = strip;
+  visible.vertices2d[0] = {2, 2};
+  visible.vertices2d[1] = {1, 0};
+  visible.vertices2d[5] = {0, 1};
+  EXPECT_THROW(layout_pages({visible}, options), InvalidInputException);
+}
+
 TEST(LayoutPages, BadInputThrows) {
   LayoutOptions options;
   options.scale = 1;
