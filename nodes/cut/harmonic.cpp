@@ -447,6 +447,11 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
     throw InvalidInputException("cut_along_isoline: snap_fraction " +
                                 std::to_string(options.snap_fraction) + " is outside [0, 0.5)");
   }
+  if (!(options.snap_distance >= 0.0 && std::isfinite(options.snap_distance))) {
+    throw InvalidInputException("cut_along_isoline: snap_distance " +
+                                std::to_string(options.snap_distance) +
+                                " is negative or not finite");
+  }
   if (n == 0 || value <= f.minCoeff() || value >= f.maxCoeff()) return {part};
 
   // Side of each vertex: -1 below, +1 above, 0 on the iso-line (exactly, or snapped).
@@ -462,8 +467,11 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
   for (auto e : part.edges()) {
     if (side[e.v0().idx()] * side[e.v1().idx()] >= 0) continue;
     const double t = crossing_parameter(e);
-    if (t <= snap) snapped[e.v0().idx()] = 1;
-    if (t >= 1.0 - snap) snapped[e.v1().idx()] = 1;
+    // The nearer vertex snaps when within the fraction of the edge or within snap_distance.
+    const double length = (part.point(e.v1()) - part.point(e.v0())).norm();
+    const double near = std::max(snap, std::min(0.5, options.snap_distance / length));
+    if (t <= near && t <= 0.5) snapped[e.v0().idx()] = 1;
+    else if (t >= 1.0 - near) snapped[e.v1().idx()] = 1;
   }
   for (int v = 0; v < n; ++v)
     if (snapped[v]) side[v] = 0;

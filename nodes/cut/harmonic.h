@@ -61,6 +61,10 @@ struct CutOptions {
   /// that vertex (which then counts as lying exactly on the iso-line). Valid range [0, 0.5);
   /// a fraction of at least 1e-12 is always used so that no zero-length edge is created.
   double snap_fraction = 0.05;
+  /// A crossing closer than this distance (model units) to a vertex snaps too, whatever the
+  /// edge's length: repeated cuts near one vertex would otherwise leave ever shorter edges
+  /// and triangles far below the tolerance (and below what rounding can orient). 0: off.
+  double snap_distance = 0.0;
 };
 
 /// Cuts `part` along the iso-line f = value: each crossed edge gets one new vertex (position,
@@ -75,8 +79,8 @@ struct CutOptions {
 /// If value is not strictly inside the range of f, or all faces end up on one side, the
 /// result is {part} unchanged; a part of several components is then not split either.
 /// \pre part has no deleted elements.
-/// \throws InvalidInputException if f.size() != #V, f or value is not finite, or
-///   snap_fraction is outside [0, 0.5).
+/// \throws InvalidInputException if f.size() != #V, f or value is not finite,
+///   snap_fraction is outside [0, 0.5) or snap_distance is negative or not finite.
 std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, double value,
                                     const CutOptions& options = {});
 

@@ -13,17 +13,14 @@
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/registry.h"
-#include "nodes/cut/maximal_strip.h"
-#include "nodes/cut/through_witness.h"
+#include "nodes/cut/rejected.h"
 
 namespace papercraft {
 
 namespace {
 
 struct CutNodeOptions {
-  WitnessCutOptions cut;
-  int search_steps = 4;
-  long search_max_faces = 4000;
+  RejectedCutOptions cut;
   int max_depth = 64;
 };
 
@@ -43,26 +40,15 @@ std::vector<Mesh> cut_part(const RejectedStrip& rejected, const CutNodeOptions& 
   if (candidate.part.depth >= options.max_depth) {
     fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
   }
-  WitnessCut cut;
-  if (rejected.hole < 0 && options.search_steps > 0 &&
-      static_cast<long>(part.n_faces()) <= options.search_max_faces) {
-    MaximalStripOptions search;
-    search.cut = options.cut;
-    search.steps = options.search_steps;
-    cut = cut_maximal_strip(part, candidate.first, candidate.first_closed, candidate.second,
-                            candidate.second_closed, model.tolerance.load(), search);
-  }
-  if (cut.pieces.empty()) {
-    cut = rejected.hole >= 0 ? cut_through_hole(part, candidate.first, candidate.second,
-                                                candidate.holes[rejected.hole], options.cut)
-                             : cut_through_witness(part, candidate.first, candidate.second,
-                                                   rejected.witness, options.cut);
-  }
+  WitnessCut cut = cut_rejected_part(
+      part, candidate.first, candidate.first_closed, candidate.second, candidate.second_closed,
+      rejected.hole >= 0 ? &candidate.holes[rejected.hole] : nullptr, rejected.witness,
+      model.tolerance.load(), options.cut);
   spdlog::debug("cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {}",
                 candidate.part.path, part.n_faces(), candidate.holes.size(), rejected.hole,
                 rejected.witness_error, cut.across ? "g" : "f", cut.value, cut.pieces.size());
   if (cut.pieces.empty()) fail("no iso-line through the worst point splits it");
-  return cut.pieces;
+  return std::move(cut.pieces);
 }
 
 }  // namespace
@@ -75,6 +61,9 @@ void register_cut_harmonic(Registry& registry) {
                 {{"out", MessageType::of<Part>()}},
                 {{"snap_fraction", ParamType::Number, "0.05",
                   "snap an iso-line crossing to a vertex within this fraction of the edge length"},
+                 {"snap_tolerance", ParamType::Number, "0.01",
+                  "also snap crossings within this fraction of the tolerance of a vertex (no "
+                  "edges far shorter than the tolerance where cuts meet)"},
                  {"positive_weights", ParamType::Boolean, "true",
                   "clamp negative cotangent weights so the field obeys the maximum principle (no "
                   "spurious iso-line loops on obtuse triangles)"},
@@ -88,17 +77,23 @@ void register_cut_harmonic(Registry& registry) {
                  {"search_max_faces", ParamType::Integer, "4000",
                   "larger parts are cut through the worst point without the search (each probe "
                   "costs a cut, a strip and a certified decision)"},
+                 {"search_min_fraction", ParamType::Number, "0.1",
+                  "the search keeps a strip only if it covers at least this fraction of the part's "
+                  "area; else the cut goes through the worst point (no thin layers peeled off)"},
                  {"max_depth", ParamType::Integer, "64",
                   "nested cuts allowed below one segment before the model fails with a message"}},
                 [](const Params& params) {
                   CutNodeOptions options;
-                  options.cut.cut.snap_fraction = params.number("snap_fraction");
+                  options.cut.cut.cut.snap_fraction = params.number("snap_fraction");
+                  options.cut.snap_tolerance = params.number("snap_tolerance");
                   options.max_depth = static_cast<int>(params.integer("max_depth"));
-                  options.search_steps = static_cast<int>(params.integer("search_steps"));
-                  options.search_max_faces = params.integer("search_max_faces");
-                  options.cut.harmonic.clamp_negative_weights = params.boolean("positive_weights");
-                  options.cut.margin = params.number("margin");
-                  options.cut.min_piece_fraction = params.number("min_piece_fraction");
+                  options.cut.search_steps = static_cast<int>(params.integer("search_steps"));
+                  options.cut.search_max_faces = params.integer("search_max_faces");
+                  options.cut.search_min_fraction = params.number("search_min_fraction");
+                  options.cut.cut.harmonic.clamp_negative_weights =
+                      params.boolean("positive_weights");
+                  options.cut.cut.margin = params.number("margin");
+                  options.cut.cut.min_piece_fraction = params.number("min_piece_fraction");
                   return make_body([options](const Envelope& in, Emitter& out) {
                     const RejectedStrip& rejected = in.get<RejectedStrip>();
                     const Part& parent = rejected.candidate->part;

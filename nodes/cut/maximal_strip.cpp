@@ -101,7 +101,8 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut.cut);
       const Probe result =
           pieces.size() < 2 ? Probe{} : probe(part, pieces, side, closed, tolerance, probe_options);
-      const bool big_enough = result.ok && result.area >= options.cut.min_piece_fraction * area &&
+      const double least = std::max(options.cut.min_piece_fraction, options.min_strip_fraction);
+      const bool big_enough = result.ok && result.area >= least * area &&
                               area - result.area >= options.cut.min_piece_fraction * area;
       if (big_enough) {
         good = d;

@@ -22,6 +22,10 @@ struct MaximalStripOptions {
   TwistOptions twist;
   BoundedHausdorffOptions hausdorff;
   int steps = 4;  // bisection steps per side
+  // A piece below this fraction of the part's area is not worth a strip of its own: peeling
+  // thin layers off the side that already fits, while the error sits at the other end, only
+  // multiplies strips and slivers. Below it the caller cuts through the worst point.
+  double min_strip_fraction = 0.1;
 };
 
 /// Cuts `part` at the iso-value that leaves the largest piece next to `first` or `second`

@@ -4,8 +4,7 @@
 #include <exception>
 #include <vector>
 
-#include "nodes/cut/maximal_strip.h"
-#include "nodes/cut/through_witness.h"
+#include "nodes/cut/rejected.h"
 #include "nodes/hausdorff/bounded.h"
 #include "nodes/hausdorff/decision.h"
 #include "nodes/ruled/twist_dp.h"
@@ -14,17 +13,8 @@
 namespace papercraft {
 namespace {
 
-// Mirrors cut.harmonic's defaults: the maximal-strip search on parts of up to this many faces.
-constexpr long kSearchMaxFaces = 4000;
 // Mirrors cut.harmonic's max_depth.
 constexpr int kMaxDepth = 64;
-
-// cut.harmonic's defaults (its positive_weights param is true; the library default is false).
-WitnessCutOptions cut_options() {
-  WitnessCutOptions options;
-  options.harmonic.clamp_negative_weights = true;
-  return options;
-}
 
 }  // namespace
 
@@ -33,9 +23,7 @@ int estimate_strips(const Mesh& root, double tolerance, int cap) {
     Mesh part;
     int depth;
   };
-  const WitnessCutOptions cut_defaults = cut_options();
-  MaximalStripOptions search;
-  search.cut = cut_defaults;
+  const RejectedCutOptions cut_defaults;  // cut.harmonic's defaults
   std::vector<Item> stack;
   stack.push_back({root, 0});
   int strips = 0;
@@ -68,18 +56,10 @@ int estimate_strips(const Mesh& root, double tolerance, int cap) {
         continue;
       }
       if (item.depth >= kMaxDepth) return cap + 1;
-      WitnessCut cut;
-      if (verdict.hole < 0 && static_cast<long>(part.n_faces()) <= kSearchMaxFaces) {
-        cut = cut_maximal_strip(part, selection.first, selection.first_closed, selection.second,
-                                selection.second_closed, tolerance, search);
-      }
-      if (cut.pieces.empty()) {
-        cut = verdict.hole >= 0
-                  ? cut_through_hole(part, selection.first, selection.second, holes[verdict.hole],
-                                     cut_defaults)
-                  : cut_through_witness(part, selection.first, selection.second, verdict.witness,
-                                        cut_defaults);
-      }
+      WitnessCut cut = cut_rejected_part(
+          part, selection.first, selection.first_closed, selection.second, selection.second_closed,
+          verdict.hole >= 0 ? &holes[verdict.hole] : nullptr, verdict.witness, tolerance,
+          cut_defaults);
       if (cut.pieces.empty()) return cap + 1;
       // Every piece makes at least one strip.
       if (strips + static_cast<int>(stack.size() + cut.pieces.size()) > cap) return cap + 1;

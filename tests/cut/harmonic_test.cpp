@@ -400,6 +400,19 @@ TEST_F(CylinderCut, CrossingNearARingSnaps) {
   const auto crossed = cut_along_isoline(cylinder_, exact_, value, fine);
   ASSERT_EQ(crossed.size(), 2u);
   EXPECT_EQ(check_vertices_against_input(cylinder_, exact_, value, crossed), 2 * 32);
+
+  // The crossing lies 0.0075 above the ring on the vertical edges (0.25 long) and about as
+  // close on the diagonals: an absolute snap distance above that snaps it whatever the
+  // fraction, one below does not.
+  CutOptions near = fine;
+  near.snap_distance = 0.01;
+  const auto near_snapped = cut_along_isoline(cylinder_, exact_, value, near);
+  ASSERT_EQ(near_snapped.size(), 2u);
+  EXPECT_EQ(check_vertices_against_input(cylinder_, exact_, 0.5, near_snapped), 0);
+  near.snap_distance = 0.005;
+  EXPECT_EQ(check_vertices_against_input(cylinder_, exact_, value,
+                                         cut_along_isoline(cylinder_, exact_, value, near)),
+            2 * 32);
 }
 
 TEST_F(CylinderCut, OutsideRangeReturnsPartUnchanged) {
@@ -415,6 +428,9 @@ TEST_F(CylinderCut, BadInput) {
   EXPECT_THROW(cut_along_isoline(cylinder_, Eigen::VectorXd::Zero(4), 0.5), InvalidInputException);
   CutOptions bad;
   bad.snap_fraction = 0.5;
+  EXPECT_THROW(cut_along_isoline(cylinder_, harmonic_, 0.5, bad), InvalidInputException);
+  bad = CutOptions{};
+  bad.snap_distance = -1e-3;
   EXPECT_THROW(cut_along_isoline(cylinder_, harmonic_, 0.5, bad), InvalidInputException);
   EXPECT_THROW(cut_along_isoline(cylinder_, harmonic_, std::nan("")), InvalidInputException);
   Mesh with_deleted = cylinder_;

@@ -1,0 +1,36 @@
+#pragma once
+// The whole decision of cut.harmonic for one rejected part, shared by the node and by the
+// segment stage's strip estimate (which must refine exactly as the pipeline does):
+//   1. on parts of up to `search_max_faces` faces, the maximal-strip search (the largest
+//      piece next to a boundary that one strip covers, if it is at least
+//      `search_min_fraction` of the part);
+//   2. else through the hole the decision named, or through the worst point (paper 3.2.2);
+//   3. if nothing splits the part, any certified strip next to a boundary, however thin.
+// Crossings within `snap_tolerance`·tolerance of a vertex snap to it.
+
+#include <vector>
+
+#include "core/mesh.h"
+#include "nodes/cut/through_witness.h"
+
+namespace papercraft {
+
+struct RejectedCutOptions {
+  RejectedCutOptions() { cut.harmonic.clamp_negative_weights = true; }
+  WitnessCutOptions cut;
+  int search_steps = 4;
+  long search_max_faces = 4000;
+  double search_min_fraction = 0.1;
+  double snap_tolerance = 0.01;
+};
+
+/// Cuts a part whose strip between `first` and `second` (vertex indices, as in
+/// harmonic_field) was rejected at `tolerance`, with its worst point at `witness`, or, when
+/// `hole` is non-null, because of that unused boundary loop. Returns no pieces when no cut
+/// makes progress.
+WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
+                             const std::vector<int>& second, bool second_closed,
+                             const std::vector<int>* hole, const Vec3& witness, double tolerance,
+                             const RejectedCutOptions& options = {});
+
+}  // namespace papercraft
