@@ -3,6 +3,11 @@
 //
 //   segment: {impl: segment.feature, params: {angle_degrees: 40}, to: [select]}
 
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <vector>
+
 #include "graph/registry.h"
 #include "nodes/segment/emit_parts.h"
 #include "nodes/segment/feature.h"
@@ -43,13 +48,20 @@ void register_segment_feature(Registry& registry) {
            if (strip_estimate && parts.size() > whole.size()) {
              // Paper folds along a crease inside a strip as well: a crease is only worth a
              // boundary if the parts cost fewer strips than the model whole.
+             // The parts first, side by side; then the model whole, counted only up to the
+             // parts' total (the usual winner on creased models stops early).
              const double tolerance = in.model->tolerance.load();
-             int whole_strips = 0;
-             for (const Mesh& part : whole) whole_strips += estimate_strips(part, tolerance, 1 << 20);
-             int part_strips = 0;
-             for (const Mesh& part : parts) {
-               part_strips += estimate_strips(part, tolerance, whole_strips - part_strips);
-               if (part_strips > whole_strips) break;
+             std::vector<int> counts(parts.size());
+             tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t i) {
+               counts[i] = estimate_strips(parts[i], tolerance, 1 << 20);
+             });
+             long part_strips = 0;
+             for (int count : counts) part_strips += count;
+             long whole_strips = 0;
+             for (const Mesh& part : whole) {
+               const long cap = std::max(0L, std::min(part_strips, long{1} << 20) - whole_strips);
+               whole_strips += estimate_strips(part, tolerance, static_cast<int>(cap));
+               if (whole_strips > part_strips) break;
              }
              if (part_strips >= whole_strips) parts = std::move(whole);
            }

@@ -96,10 +96,9 @@ TEST(Pattern, PawnAndFigureEightPatternsAreIsometricAndSeamed) {
 }
 
 TEST(Pattern, FeatureSegmentationOfABoxIsCertifiedWithSixSegments) {
-  std::string config = default_config_text();
-  const std::string from = "segment.none, ";
-  config.replace(config.find(from), from.size(), "segment.feature,");
-  const auto out = run_pipeline(box(), "2%", "box", 0, config);
+  ASSERT_NE(default_config_text().find("segment.feature"), std::string::npos)
+      << "the default config segments along sharp edges";
+  const auto out = run_pipeline(box(), "2%", "box");
   ASSERT_TRUE(out.result.ok) << out.result.error;
   EXPECT_EQ(out.report.at("result").at("segments").get<int>(), 6);
   EXPECT_TRUE(out.report.at("result").at("certified").get<bool>());
