@@ -67,17 +67,22 @@ void check_choice(const ParamSpec& spec, const std::string& value) {
 
 }  // namespace
 
+std::size_t parse_number_prefix(const std::string& text, double& value) {
+  std::size_t used = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  return used;
+}
+
 ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
   const std::string text = trim(raw);
   switch (spec.type) {
     case ParamType::Number: {
-      std::size_t used = 0;
       double value = 0;
-      try {
-        value = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
+      const std::size_t used = parse_number_prefix(text, value);
       if (used == 0 || used != text.size() || !std::isfinite(value)) {
         throw std::invalid_argument("expected a number, got '" + text + "'");
       }

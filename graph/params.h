@@ -48,4 +48,8 @@ ParamValue parse_param_value(const ParamSpec& spec, const std::string& text);
 
 std::string format_param_value(const ParamValue& value);
 
+/// Reads the number at the start of `text` (as std::stod) into `value` and returns how many
+/// characters it used: 0 when `text` does not start with a number or it is out of range.
+std::size_t parse_number_prefix(const std::string& text, double& value);
+
 }  // namespace papercraft

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "graph/params.h"
+
 namespace papercraft {
 
 std::string ToleranceSpec::to_string() const {
@@ -23,13 +25,8 @@ ToleranceSpec parse_tolerance(const std::string& raw) {
   ToleranceSpec spec;
   spec.relative = !text.empty() && text.back() == '%';
   if (spec.relative) text.pop_back();
-  std::size_t used = 0;
   double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const std::size_t used = parse_number_prefix(text, value);
   if (used == 0 || used != text.size() || !std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument("expected a positive tolerance like 2% or 0.004, got '" + raw +
                                 "'");
@@ -39,13 +36,8 @@ ToleranceSpec parse_tolerance(const std::string& raw) {
 }
 
 double parse_length_mm(const std::string& raw) {
-  std::size_t used = 0;
   double value = 0.0;
-  try {
-    value = std::stod(raw, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const std::size_t used = parse_number_prefix(raw, value);
   std::string unit;
   for (std::size_t i = used; i < raw.size(); ++i) {
     if (!std::isspace(static_cast<unsigned char>(raw[i]))) {

@@ -94,6 +94,7 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
     const bool closed = low_side ? first_closed : second_closed;
     // Bisection on the distance d from this side's boundary: d = value (low) or 1 - value.
     double good = 0.0, bad = 1.0;
+    const double least = std::max(options.cut.min_piece_fraction, options.min_strip_fraction);
     Side found;
     for (int step = 0; step < options.steps; ++step) {
       const double d = std::clamp(0.5 * (good + bad), margin, 1.0 - margin);
@@ -101,7 +102,6 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut.cut);
       const Probe result =
           pieces.size() < 2 ? Probe{} : probe(part, pieces, side, closed, tolerance, probe_options);
-      const double least = std::max(options.cut.min_piece_fraction, options.min_strip_fraction);
       const bool big_enough = result.ok && result.area >= least * area &&
                               area - result.area >= options.cut.min_piece_fraction * area;
       if (big_enough) {

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "nodes/unfold/flat_boundary.h"
 
 namespace papercraft {
 namespace {
@@ -501,20 +502,12 @@ StripData prepare_strip(const FlatStrip& strip, double mm_per_unit) {
   data.strip = &strip;
   for (const Vec2& v : strip.vertices2d) data.points.push_back(v * mm_per_unit);
   const std::string name = strip_name(strip);
-  // A triangle far below the strip's size (a sliver left where cuts met near a vertex) has
-  // an orientation that rounding decides; it is kept for connectivity but not judged.
-  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const Vec2& p : data.points) low = low.cwiseMin(p), high = high.cwiseMax(p);
-  const double negligible = data.points.empty() ? 0.0 : 1e-12 * (high - low).squaredNorm();
+  if (const int t = first_clockwise_triangle(strip.vertices2d, strip.triangles, 1e-9); t >= 0)
+    throw InvalidInputException(name + " triangle " + std::to_string(t) +
+                                " is clockwise in 2D (a mirrored unfolding)");
   for (int t = 0; t < static_cast<int>(strip.triangles.size()); ++t) {
     const Triangle& tri = strip.triangles[t];
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
-    const Vec2 &a = data.points[tri[0]], &b = data.points[tri[1]], &c = data.points[tri[2]];
-    const double longest =
-        std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-    if (longest > negligible && cross(b - a, c - a) < -1e-9 * longest)
-      throw InvalidInputException(name + " triangle " + std::to_string(t) +
-                                  " is clockwise in 2D (a mirrored unfolding)");
     for (int i = 0; i < 3; ++i) {
       if (!data.owner.emplace(edge_key(tri[i], tri[(i + 1) % 3]), t).second)
         throw InvalidInputException(name + " edge " + std::to_string(tri[i]) + "-" +

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -197,22 +196,6 @@ bool consistently_oriented(const std::vector<Triangle>& triangles) {
   return true;
 }
 
-// Welding snaps y's seam vertices onto x's; a thin triangle next to the seam must not flip.
-// Triangles far below the strip's size have a rounding-decided orientation and are not
-// judged (the layout skips them the same way).
-bool counter_clockwise(const FlatStrip& strip) {
-  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (const Vec2& p : strip.vertices2d) low = low.cwiseMin(p), high = high.cwiseMax(p);
-  const double negligible = strip.vertices2d.empty() ? 0.0 : 1e-12 * (high - low).squaredNorm();
-  for (const Triangle& t : strip.triangles) {
-    const Vec2& a = strip.vertices2d[t[0]];
-    const Vec2 e1 = strip.vertices2d[t[1]] - a, e2 = strip.vertices2d[t[2]] - a;
-    const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()});
-    if (longest > negligible && e1.x() * e2.y() - e1.y() * e2.x() < -1e-10 * longest) return false;
-  }
-  return true;
-}
-
 // Y moved onto X along one of their chains and welded, or false when no chain gives a
 // congruent, overlap-free union.
 bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains,
@@ -288,8 +271,10 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
     for (const Triangle& t : y.triangles)
       merged.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
     // Welding must keep the strip a consistently oriented manifold: a directed edge used by
-    // two triangles means the chains were glued the wrong way round somewhere.
-    if (!consistently_oriented(merged.triangles) || !counter_clockwise(merged)) continue;
+    // two triangles means the chains were glued the wrong way round somewhere; and welding
+    // snaps y's seam vertices onto x's, so a thin triangle next to the seam must not flip.
+    if (!consistently_oriented(merged.triangles) || first_clockwise_triangle(merged.vertices2d, merged.triangles, 1e-10) >= 0)
+      continue;
     merged.boundary = flat_boundary(merged.triangles);
     return true;
   }

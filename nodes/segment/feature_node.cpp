@@ -47,9 +47,9 @@ void register_segment_feature(Registry& registry) {
            std::vector<Mesh> whole = segment_none(mesh);
            if (strip_estimate && parts.size() > whole.size()) {
              // Paper folds along a crease inside a strip as well: a crease is only worth a
-             // boundary if the parts cost fewer strips than the model whole.
-             // The parts first, side by side; then the model whole, counted only up to the
-             // parts' total (the usual winner on creased models stops early).
+             // boundary if the parts cost fewer strips than the model whole. The parts are
+             // counted first, side by side; the model whole only up to their total (so the
+             // usual loser on creased models stops early).
              const double tolerance = in.model->tolerance.load();
              std::vector<int> counts(parts.size());
              tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t i) {
@@ -59,7 +59,7 @@ void register_segment_feature(Registry& registry) {
              for (int count : counts) part_strips += count;
              long whole_strips = 0;
              for (const Mesh& part : whole) {
-               const long cap = std::max(0L, std::min(part_strips, long{1} << 20) - whole_strips);
+               const long cap = std::min(part_strips - whole_strips, long{1} << 20);  // >= 0
                whole_strips += estimate_strips(part, tolerance, static_cast<int>(cap));
                if (whole_strips > part_strips) break;
              }

@@ -1,6 +1,7 @@
 #include "nodes/unfold/flat_boundary.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -44,6 +45,21 @@ std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles) 
     }
   }
   return result;
+}
+
+int first_clockwise_triangle(const std::vector<Vec2>& points,
+                             const std::vector<Triangle>& triangles, double relative) {
+  Vec2 low = Vec2::Constant(std::numeric_limits<double>::infinity()), high = -low;
+  for (const Vec2& p : points) low = low.cwiseMin(p), high = high.cwiseMax(p);
+  const double negligible = points.empty() ? 0.0 : 1e-12 * (high - low).squaredNorm();
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    const Triangle& tri = triangles[t];
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
+    const Vec2 &a = points[tri[0]], e1 = points[tri[1]] - a, e2 = points[tri[2]] - a;
+    const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), (e2 - e1).squaredNorm()});
+    if (longest > negligible && e1.x() * e2.y() - e1.y() * e2.x() < -relative * longest) return t;
+  }
+  return -1;
 }
 
 }  // namespace papercraft

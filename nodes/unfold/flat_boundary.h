@@ -1,5 +1,6 @@
 #pragma once
-// The boundary edges of a flat strip's triangles, shared by `unfold` and `merge`.
+// The boundary edges and the orientation of a flat strip's triangles, shared by `unfold`,
+// `merge` and `layout`.
 
 #include <vector>
 
@@ -16,5 +17,13 @@ namespace papercraft {
 /// Known limit: at a vertex where the boundary touches itself (two outgoing boundary edges)
 /// the loop follows the first unused edge, so such a loop may be split differently.
 std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles);
+
+/// The first triangle that turns clockwise in `points`, i.e. whose cross product is below
+/// -`relative` times its longest edge squared, or -1 if none does. Not judged: triangles
+/// with a repeated index, and triangles whose longest edge is under 1e-6 of the bounding-box
+/// diagonal of `points` (slivers left where cuts met near a vertex: rounding decides their
+/// orientation). Scale-invariant.
+int first_clockwise_triangle(const std::vector<Vec2>& points,
+                             const std::vector<Triangle>& triangles, double relative);
 
 }  // namespace papercraft
