@@ -10,8 +10,15 @@
 //
 // --summary prints one-shot timings of the acceptance criterion instead: our decision at
 // tau = 2H vs CGAL's value at error bound 0.05 tau, their ratio, and whether the values agree.
+//
+// --pairs [--tolerance 2%] MESH...: the same criterion on real (part, strip) pairs. Runs the
+// default pipeline on each mesh with its hausdorff stage swapped for a recording node (same
+// decision, it keeps a copy of every pair it is asked about), then times, per pair with
+// H > 1e-6 of the part's diagonal (else the strip is the part up to rounding), our decision at tau = 2H against CGAL's value at 0.05 tau; prints per mesh the sums,
+// their ratio, the median and smallest per-pair ratio, and how many values agree.
 
 #include <benchmark/benchmark.h>
+#include <spdlog/spdlog.h>
 #include <tbb/global_control.h>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -22,10 +29,19 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <algorithm>
+#include <filesystem>
+#include <mutex>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "core/bvh.h"
 #include "core/mesh.h"
+#include "graph/config.h"
+#include "graph/pipeline.h"
+#include "graph/registry.h"
+#include "nodes/hausdorff/emit_verdict.h"
 #include "nodes/hausdorff/bounded.h"
 #include "nodes/hausdorff/sampled.h"
 
@@ -191,10 +207,14 @@ const CgalPair& cgal_pair() {
   return instance;
 }
 
-double cgal_value(double error_bound) {
+double cgal_value(const SurfaceMesh& a, const SurfaceMesh& b, double error_bound) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
-      cgal_pair().a, cgal_pair().b, error_bound);
+  return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b,
+                                                                             error_bound);
+}
+
+double cgal_value(double error_bound) {
+  return cgal_value(cgal_pair().a, cgal_pair().b, error_bound);
 }
 
 void BM_CgalBoundedErrorDistance(benchmark::State& state) {
@@ -256,12 +276,159 @@ int summary() {
 #endif
 }
 
+// --- real (part, strip) pairs from pipeline runs ---
+
+struct RecordedPair {
+  TriangleMesh part, strip;
+};
+
+struct Recorder {
+  std::mutex mutex;
+  std::vector<RecordedPair> pairs;
+};
+
+Recorder& recorder() {
+  static Recorder instance;
+  return instance;
+}
+
+/// hausdorff.bounded's decision, plus a copy of every pair it decides.
+void register_recording_node(Registry& registry) {
+  registry.add({"hausdorff.recording",
+                "hausdorff.bounded that keeps every (part, strip) pair (benchmark only)",
+                MessageType::of<StripCandidate>(),
+                false,
+                hausdorff_ports(),
+                {},
+                [](const Params&) {
+                  return make_body([](const Envelope& in, Emitter& out) {
+                    decide_and_emit(in, out, [](const TriangleMesh& a, const TriangleMesh& b,
+                                                double tau) {
+                      {
+                        std::lock_guard lock(recorder().mutex);
+                        recorder().pairs.push_back({a, b});
+                      }
+                      return certified_hausdorff_within(a, b, tau);
+                    });
+                  });
+                }});
+}
+
+std::vector<RecordedPair> record_pairs(const std::filesystem::path& mesh,
+                                       const std::string& tolerance) {
+  static const Registry registry = [] {
+    Registry r;
+    register_builtin_nodes(r);
+    register_recording_node(r);
+    return r;
+  }();
+  std::string text = default_config_text();
+  const std::string from = "hausdorff.bounded";
+  text.replace(text.find(from), from.size(), "hausdorff.recording");
+  text.replace(text.find("params: {precision: 0.05}, "), 27, "");
+  auto settings = std::make_shared<RunSettings>();
+  settings->tolerance = parse_tolerance(tolerance);
+  settings->output_dir = std::filesystem::temp_directory_path() / "papercraft-hausdorff-pairs";
+  settings->config_text = text;
+  Pipeline pipeline(parse_pipeline_config(text, "recording.yaml", registry), registry);
+  PipelineOptions options;
+  options.threads = 1;
+  recorder().pairs.clear();
+  const auto results = pipeline.run({mesh}, settings, options);
+  if (!results.at(0).ok) std::fprintf(stderr, "%s: pipeline failed\n", mesh.c_str());
+  return std::move(recorder().pairs);
+}
+
+int pairs_summary(const std::vector<std::string>& meshes, const std::string& tolerance) {
+  spdlog::set_level(spdlog::level::warn);
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 1);
+  int failures = 0;
+  double all_ours = 0.0, all_cgal = 0.0;
+  std::vector<double> all_ratios;
+  std::size_t all_pairs = 0, all_timed = 0;
+  int all_agree = 0;
+  auto print_row = [](const std::string& name, std::size_t pairs, std::size_t timed, double ours,
+                      double cgal, std::vector<double> ratios, int agree) {
+    std::sort(ratios.begin(), ratios.end());
+    std::printf("%-14s %6zu %6zu %10.2f %10.2f %6.1fx %7.1fx %6.1fx %4d/%zu\n", name.c_str(),
+                pairs, timed, 1e3 * ours, 1e3 * cgal, ours > 0 ? cgal / ours : 0.0,
+                ratios.empty() ? 0.0 : ratios[ratios.size() / 2],
+                ratios.empty() ? 0.0 : ratios.front(), agree, ratios.size());
+    std::fflush(stdout);
+  };
+  std::printf("%-14s %6s %6s %10s %10s %7s %8s %7s %7s\n", "mesh", "pairs", "timed",
+              "ours ms", "CGAL ms", "ratio", "median", "min", "agree");
+  for (const std::string& path : meshes) {
+    const std::vector<RecordedPair> pairs = record_pairs(path, tolerance);
+    double ours_total = 0.0, cgal_total = 0.0;
+    std::vector<double> ratios;
+    std::size_t timed = 0;
+    int agree = 0;
+    for (const RecordedPair& p : pairs) {
+      const TriangleBvh tree_a(p.part), tree_b(p.strip);
+      const auto box = bounding_box(p.part.vertices);
+      const double diagonal = (box[1] - box[0]).norm();
+      const HausdorffResult coarse = certified_hausdorff_distance(tree_a, tree_b, 1e-2 * diagonal);
+      const HausdorffResult tight =
+          certified_hausdorff_distance(tree_a, tree_b, 1e-4 * std::max(coarse.upper, 1e-12));
+      const double h = 0.5 * (tight.lower + tight.upper);
+      // The strip is the part up to rounding (a flat part and its fan): nothing to decide, and
+      // CGAL's subdivision at 0.05 tau of that runs out of memory.
+      if (!(h > 1e-6 * diagonal)) continue;
+      ++timed;
+      const double tau = 2 * h;
+      HausdorffResult decision, value;
+      const double ours =
+          best_seconds(3, [&] { decision = certified_hausdorff_within(tree_a, tree_b, tau); });
+      value = certified_hausdorff_distance(tree_a, tree_b, 0.05 * tau);
+      ours_total += ours;
+#ifdef PAPERCRAFT_HAVE_CGAL
+      const SurfaceMesh a = to_cgal(p.part), b = to_cgal(p.strip);
+      double cgal = 0.0;
+      const double cgal_seconds = best_seconds(3, [&] { cgal = cgal_value(a, b, 0.05 * tau); });
+      cgal_total += cgal_seconds;
+      ratios.push_back(cgal_seconds / ours);
+      agree += cgal >= value.lower - 0.05 * tau && cgal <= value.upper + 0.05 * tau;
+#endif
+      if (!decision.within) ++failures;  // at tau = 2H the decision must accept
+    }
+    print_row(std::filesystem::path(path).filename().string(), pairs.size(), timed, ours_total,
+              cgal_total, ratios, agree);
+    if (agree != static_cast<int>(ratios.size())) ++failures;
+    all_pairs += pairs.size();
+    all_timed += timed;
+    all_ours += ours_total;
+    all_cgal += cgal_total;
+    all_agree += agree;
+    all_ratios.insert(all_ratios.end(), ratios.begin(), ratios.end());
+  }
+  if (meshes.size() > 1) {
+    print_row("all", all_pairs, all_timed, all_ours, all_cgal, all_ratios, all_agree);
+  }
+#ifndef PAPERCRAFT_HAVE_CGAL
+  std::printf("CGAL not found at configure time: no comparison\n");
+#endif
+  return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 }  // namespace papercraft
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--summary") == 0) return papercraft::summary();
+    if (std::strcmp(argv[i], "--pairs") == 0) {
+      std::string tolerance = "2%";
+      std::vector<std::string> meshes;
+      for (int j = i + 1; j < argc; ++j) {
+        if (std::strcmp(argv[j], "--tolerance") == 0 && j + 1 < argc) {
+          tolerance = argv[++j];
+        } else {
+          meshes.push_back(argv[j]);
+        }
+      }
+      return papercraft::pairs_summary(meshes, tolerance);
+    }
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
