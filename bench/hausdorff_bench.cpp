@@ -388,6 +388,11 @@ int pairs_summary(const std::vector<std::string>& meshes, const std::string& tol
       const double cgal_seconds = best_seconds(3, [&] { cgal = cgal_value(a, b, 0.05 * tau); });
       cgal_total += cgal_seconds;
       ratios.push_back(cgal_seconds / ours);
+      if (cgal_seconds < 5 * ours) {
+        std::fprintf(stderr, "  under 5x: part %zu, strip %zu triangles: ours %.3f ms, CGAL %.3f ms\n",
+                     p.part.triangles.size(), p.strip.triangles.size(), 1e3 * ours,
+                     1e3 * cgal_seconds);
+      }
       agree += cgal >= value.lower - 0.05 * tau && cgal <= value.upper + 0.05 * tau;
 #endif
       if (!decision.within) ++failures;  // at tau = 2H the decision must accept
