@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <map>
+#include <mutex>
 #include <numeric>
 #include <queue>
 #include <string>
+#include <unordered_map>
 
 #include "core/errors.h"
 #include "nodes/segment/face_regions.h"
@@ -454,7 +458,7 @@ class Hierarchy {
     int strips = 0;
     for (const Mesh& part : parts) {
       if (cap - strips < 1) return cap + 1;
-      strips += estimate_strips(part, options_.strip_tolerance, cap - strips);
+      strips += estimate(part, cap - strips);
       if (strips > cap) return cap + 1;
     }
     return strips;
@@ -535,6 +539,57 @@ class Hierarchy {
   }
 
   bool judge_by_strips() const { return options_.strip_tolerance > 0; }
+
+  // estimate_strips, remembered: the same region is judged whole at one level, as a part of
+  // several candidate decompositions, and again as emitted. An entry holds the exact count if
+  // it is at most the cap it was computed with, else only that the count exceeds that cap, so
+  // a hit returns what a fresh call would (the result does not depend on the threads).
+  int estimate(const Mesh& part, int cap) const {
+    const std::uint64_t key = geometry_hash(part);
+    {
+      std::lock_guard lock(estimates_mutex_);
+      const auto it = estimates_.find(key);
+      if (it != estimates_.end()) {
+        const auto [count, computed_cap] = it->second;
+        if (count <= computed_cap) return count <= cap ? count : cap + 1;
+        if (cap <= computed_cap) return cap + 1;
+      }
+    }
+    const int count = estimate_strips(part, options_.strip_tolerance, cap);
+    std::lock_guard lock(estimates_mutex_);
+    const auto [it, inserted] = estimates_.try_emplace(key, count, cap);
+    if (!inserted) {
+      const auto [known, known_cap] = it->second;
+      if (known > known_cap && (count <= cap || cap > known_cap)) it->second = {count, cap};
+    }
+    return count;
+  }
+
+  // FNV-1a over the vertex coordinates and the triangles: parts cut out of the same faces the
+  // same way are bit-identical meshes.
+  static std::uint64_t geometry_hash(const Mesh& part) {
+    std::uint64_t hash = 1469598103934665603ull;
+    auto mix = [&](std::uint64_t word) {
+      for (int byte = 0; byte < 8; ++byte) {
+        hash ^= (word >> (8 * byte)) & 0xff;
+        hash *= 1099511628211ull;
+      }
+    };
+    mix(part.n_vertices());
+    mix(part.n_faces());
+    for (auto v : part.vertices()) {
+      for (int i = 0; i < 3; ++i) {
+        std::uint64_t bits;
+        const double x = part.point(v)[i];
+        std::memcpy(&bits, &x, sizeof bits);
+        mix(bits);
+      }
+    }
+    for (auto f : part.faces()) {
+      for (auto v : part.fv_range(f)) mix(static_cast<std::uint64_t>(v.idx()));
+    }
+    return hash;
+  }
 
   // The faces of each label, labels in order of first appearance in `faces`.
   static std::vector<std::vector<int>> groups(const std::vector<int>& faces,
@@ -620,6 +675,8 @@ class Hierarchy {
   const FaceGraph& graph_;
   const FuzzySegmentOptions& options_;
   double min_area_;
+  mutable std::mutex estimates_mutex_;
+  mutable std::unordered_map<std::uint64_t, std::pair<int, int>> estimates_;  // count, cap
 };
 
 void validate(const FuzzySegmentOptions& options) {
