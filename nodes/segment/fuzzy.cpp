@@ -1,6 +1,7 @@
 #include "nodes/segment/fuzzy.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -521,18 +522,37 @@ class Hierarchy {
   // The leaves of `faces` that the refinement makes the fewest strips of: the region whole, or
   // one of its decompositions with each part's own cheapest leaves. Ties keep fewer parts. Only
   // costs up to `cap` are told apart.
+  //
+  // With more than one thread the candidates are judged side by side, each against the region
+  // whole rather than against the best candidate before it: more work, the same choice (the
+  // first candidate of least cost; a choice costing at most its cap does not depend on it).
   Choice cheapest(const std::vector<int>& faces, int depth, int cap) const {
     Choice best{{faces}, strips_of(faces, cap)};
     if (best.cost <= 1) return best;
-    for (const auto& candidate : decompositions(faces, depth)) {
+    const auto candidates = decompositions(faces, depth);
+    auto judge = [&](const std::vector<std::vector<int>>& candidate, int bound) {
       Choice split;
-      const int bound = std::min(best.cost, cap + 1);  // to beat
       for (const auto& group : candidate) {
         Choice child = cheapest(group, depth + 1, bound - split.cost - 1);
         split.cost += child.cost;
         if (split.cost >= bound) break;
         for (auto& leaf : child.leaves) split.leaves.push_back(std::move(leaf));
       }
+      return split;
+    };
+    if (candidates.size() > 1 && tbb::this_task_arena::max_concurrency() > 1) {
+      std::vector<Choice> splits(candidates.size());
+      const int bound = std::min(best.cost, cap + 1);
+      tbb::parallel_for(std::size_t{0}, candidates.size(),
+                        [&](std::size_t c) { splits[c] = judge(candidates[c], bound); });
+      for (Choice& split : splits) {
+        if (split.cost < std::min(best.cost, cap + 1)) best = std::move(split);
+      }
+      return best;
+    }
+    for (const auto& candidate : candidates) {
+      const int bound = std::min(best.cost, cap + 1);  // to beat
+      Choice split = judge(candidate, bound);
       if (split.cost < bound) best = std::move(split);
     }
     return best;
