@@ -12,6 +12,7 @@
 #include <mutex>
 #include <numeric>
 #include <queue>
+#include <set>
 #include <string>
 #include <unordered_map>
 
@@ -410,6 +411,55 @@ class Hierarchy {
     return all;
   }
 
+  // The hierarchy only ever merges regions of one parent; two leaves of different branches (a
+  // neck on one side of a level's boundary and the head on the other) may still be cheaper as
+  // one region. Merges the pair of adjacent leaves that saves the most estimated strips, until
+  // no pair saves any (ties: the first pair in leaf order). Deterministic.
+  std::vector<std::vector<int>> merge_cheaper_neighbours(std::vector<std::vector<int>> leaves) const {
+    constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
+    std::vector<int> cost(leaves.size());
+    tbb::parallel_for(std::size_t{0}, leaves.size(),
+                      [&](std::size_t i) { cost[i] = strips_of(leaves[i], kUnbounded); });
+    for (;;) {
+      std::vector<int> leaf_of(graph_.areas.size(), -1);
+      for (std::size_t i = 0; i < leaves.size(); ++i)
+        for (int f : leaves[i]) leaf_of[f] = static_cast<int>(i);
+      std::set<std::pair<int, int>> adjacent;
+      for (std::size_t i = 0; i < leaves.size(); ++i) {
+        for (int f : leaves[i]) {
+          for (int a : graph_.face_arcs[f]) {
+            const int j = leaf_of[graph_.other_face(a, f)];
+            if (j > static_cast<int>(i)) adjacent.insert({static_cast<int>(i), j});
+          }
+        }
+      }
+      const std::vector<std::pair<int, int>> pairs(adjacent.begin(), adjacent.end());
+      std::vector<int> merged_cost(pairs.size());
+      tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t k) {
+        const auto [i, j] = pairs[k];
+        std::vector<int> faces = leaves[i];
+        faces.insert(faces.end(), leaves[j].begin(), leaves[j].end());
+        std::sort(faces.begin(), faces.end());
+        merged_cost[k] = strips_of(faces, cost[i] + cost[j] - 1);
+      });
+      int best = -1, best_saving = 0;
+      for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const int saving = cost[pairs[k].first] + cost[pairs[k].second] - merged_cost[k];
+        if (saving > best_saving) {
+          best_saving = saving;
+          best = static_cast<int>(k);
+        }
+      }
+      if (best < 0) return leaves;
+      const auto [i, j] = pairs[best];
+      leaves[i].insert(leaves[i].end(), leaves[j].begin(), leaves[j].end());
+      std::sort(leaves[i].begin(), leaves[i].end());
+      cost[i] = merged_cost[best];
+      leaves.erase(leaves.begin() + j);
+      cost.erase(cost.begin() + j);
+    }
+  }
+
   // The connected pieces (through arcs) of each label of `faces`, in order of lowest face.
   std::vector<std::vector<int>> connected_groups(const std::vector<int>& faces,
                                                  const std::vector<int>& label) const {
@@ -744,7 +794,10 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
   std::vector<int> labels(mesh.n_faces(), -1);
   int next_label = 0;
   for (const auto& faces : components) {
-    for (const auto& leaf : hierarchy.leaves(faces, 0)) {
+    std::vector<std::vector<int>> leaves = hierarchy.leaves(faces, 0);
+    if (options.strip_tolerance > 0 && options.merge_neighbours && leaves.size() > 1)
+      leaves = hierarchy.merge_cheaper_neighbours(std::move(leaves));
+    for (const auto& leaf : leaves) {
       for (int f : leaf) labels[f] = next_label;
       ++next_label;
     }

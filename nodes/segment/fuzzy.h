@@ -64,6 +64,9 @@ struct FuzzySegmentOptions {
   /// With strip_tolerance > 0, also judge each part of a decomposition of three or more
   /// parts split off alone (the rest of the region whole).
   bool single_part_candidates = true;
+  /// With strip_tolerance > 0, after the hierarchy merge the two adjacent parts (of any
+  /// branches) whose union the refinement makes the most strips fewer of, while any pair saves.
+  bool merge_neighbours = true;
   /// Replace each boundary by the 1/2 iso-line of a harmonic field between the two sides,
   /// within straighten_width mean edge lengths of it (a smooth curve across the triangles
   /// instead of a staircase of edges). A boundary that runs along a crease (the surface folds

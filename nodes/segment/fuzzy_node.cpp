@@ -41,6 +41,8 @@ void register_segment_fuzzy(Registry& registry) {
                   "with strip_estimate, also judge each region's two-way farthest-faces split"},
                  {"single_part_candidates", ParamType::Boolean, "true",
                   "with strip_estimate, also judge each part of a decomposition split off alone"},
+                 {"merge_neighbours", ParamType::Boolean, "true",
+                  "with strip_estimate, then merge adjacent parts whose union makes fewer strips"},
                  {"parts_ply", ParamType::Boolean, "true",
                   "write the parts, faces coloured by part, to <output>/parts.ply"}},
                 [](const Params& params) {
@@ -57,6 +59,7 @@ void register_segment_fuzzy(Registry& registry) {
                   options.straighten = params.boolean("straighten");
                   options.two_way_candidate = params.boolean("two_way_candidate");
                   options.single_part_candidates = params.boolean("single_part_candidates");
+                  options.merge_neighbours = params.boolean("merge_neighbours");
                   options.min_area_fraction = params.number("min_area_fraction");
                   const bool parts_ply = params.boolean("parts_ply");
                   const bool strip_estimate = params.boolean("strip_estimate");

@@ -79,6 +79,31 @@ TEST(SegmentFuzzyByStrips, DumbbellPartitionIsValidAndThreadIndependent) {
   }
 }
 
+TEST(SegmentFuzzyByStrips, MergingNeighboursNeverCostsStrips) {
+  // The pass after the hierarchy merges adjacent parts only where the union is estimated
+  // cheaper: the emitted parts (not straightened, so they are the judged ones) never cost more
+  // strips with it, and still partition the mesh.
+  constexpr double kTolerance = 0.08;
+  auto cost = [](const std::vector<Mesh>& parts) {
+    int sum = 0;
+    for (const Mesh& part : parts) sum += estimate_strips(part, kTolerance, 1000);
+    return sum;
+  };
+  DumbbellOptions shape;
+  shape.handle_radius = 0.3;
+  shape.handle_length = 1.5;
+  const Mesh mesh = tagged_mesh(dumbbell(shape));
+  FuzzySegmentOptions with = judged(kTolerance);
+  with.straighten = false;
+  FuzzySegmentOptions without = with;
+  without.merge_neighbours = false;
+  const std::vector<Mesh> merged = segment_fuzzy(mesh, with);
+  const std::vector<Mesh> unmerged = segment_fuzzy(mesh, without);
+  expect_partition(mesh, merged);
+  EXPECT_LE(merged.size(), unmerged.size());
+  EXPECT_LE(cost(merged), cost(unmerged));
+}
+
 TEST(SegmentFuzzyByStrips, RejectsNegativeTolerance) {
   const Mesh mesh = tagged_mesh(sphere({1.0, 2}));
   EXPECT_THROW(segment_fuzzy(mesh, judged(-1.0)), InvalidInputException);
