@@ -14,8 +14,9 @@
 // --pairs [--tolerance 2%] MESH...: the same criterion on real (part, strip) pairs. Runs the
 // default pipeline on each mesh with its hausdorff stage swapped for a recording node (same
 // decision, it keeps a copy of every pair it is asked about), then times, per pair with
-// H > 1e-6 of the part's diagonal (else the strip is the part up to rounding), our decision at tau = 2H against CGAL's value at 0.05 tau; prints per mesh the sums,
-// their ratio, the median and smallest per-pair ratio, and how many values agree.
+// H > 1e-6 of the part's diagonal (else the strip is the part up to rounding), our decision
+// at tau = 2H against CGAL's value at 0.05 tau; prints per mesh the sums, their ratio, the
+// median and smallest per-pair ratio, and how many values agree.
 
 #include <benchmark/benchmark.h>
 #include <spdlog/spdlog.h>
@@ -24,12 +25,12 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Tools/Decimater/DecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModQuadricT.hh>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <algorithm>
 #include <filesystem>
 #include <mutex>
 #include <optional>
@@ -41,8 +42,8 @@
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
-#include "nodes/hausdorff/emit_verdict.h"
 #include "nodes/hausdorff/bounded.h"
+#include "nodes/hausdorff/emit_verdict.h"
 #include "nodes/hausdorff/sampled.h"
 
 #ifdef PAPERCRAFT_HAVE_CGAL
@@ -209,8 +210,7 @@ const CgalPair& cgal_pair() {
 
 double cgal_value(const SurfaceMesh& a, const SurfaceMesh& b, double error_bound) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b,
-                                                                             error_bound);
+  return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(a, b, error_bound);
 }
 
 double cgal_value(double error_bound) {
@@ -302,14 +302,14 @@ void register_recording_node(Registry& registry) {
                 {},
                 [](const Params&) {
                   return make_body([](const Envelope& in, Emitter& out) {
-                    decide_and_emit(in, out, [](const TriangleMesh& a, const TriangleMesh& b,
-                                                double tau) {
-                      {
-                        std::lock_guard lock(recorder().mutex);
-                        recorder().pairs.push_back({a, b});
-                      }
-                      return certified_hausdorff_within(a, b, tau);
-                    });
+                    decide_and_emit(in, out,
+                                    [](const TriangleMesh& a, const TriangleMesh& b, double tau) {
+                                      {
+                                        std::lock_guard lock(recorder().mutex);
+                                        recorder().pairs.push_back({a, b});
+                                      }
+                                      return certified_hausdorff_within(a, b, tau);
+                                    });
                   });
                 }});
 }
@@ -350,14 +350,14 @@ int pairs_summary(const std::vector<std::string>& meshes, const std::string& tol
   auto print_row = [](const std::string& name, std::size_t pairs, std::size_t timed, double ours,
                       double cgal, std::vector<double> ratios, int agree) {
     std::sort(ratios.begin(), ratios.end());
-    std::printf("%-14s %6zu %6zu %10.2f %10.2f %6.1fx %7.1fx %6.1fx %4d/%zu\n", name.c_str(),
-                pairs, timed, 1e3 * ours, 1e3 * cgal, ours > 0 ? cgal / ours : 0.0,
+    std::printf("%-14s %6zu %6zu %10.2f %10.2f %6.1fx %7.1fx %6.1fx %4d/%zu\n", name.c_str(), pairs,
+                timed, 1e3 * ours, 1e3 * cgal, ours > 0 ? cgal / ours : 0.0,
                 ratios.empty() ? 0.0 : ratios[ratios.size() / 2],
                 ratios.empty() ? 0.0 : ratios.front(), agree, ratios.size());
     std::fflush(stdout);
   };
-  std::printf("%-14s %6s %6s %10s %10s %7s %8s %7s %7s\n", "mesh", "pairs", "timed",
-              "ours ms", "CGAL ms", "ratio", "median", "min", "agree");
+  std::printf("%-14s %6s %6s %10s %10s %7s %8s %7s %7s\n", "mesh", "pairs", "timed", "ours ms",
+              "CGAL ms", "ratio", "median", "min", "agree");
   for (const std::string& path : meshes) {
     const std::vector<RecordedPair> pairs = record_pairs(path, tolerance);
     double ours_total = 0.0, cgal_total = 0.0;
@@ -389,9 +389,9 @@ int pairs_summary(const std::vector<std::string>& meshes, const std::string& tol
       cgal_total += cgal_seconds;
       ratios.push_back(cgal_seconds / ours);
       if (cgal_seconds < 5 * ours) {
-        std::fprintf(stderr, "  under 5x: part %zu, strip %zu triangles: ours %.3f ms, CGAL %.3f ms\n",
-                     p.part.triangles.size(), p.strip.triangles.size(), 1e3 * ours,
-                     1e3 * cgal_seconds);
+        std::fprintf(
+            stderr, "  under 5x: part %zu, strip %zu triangles: ours %.3f ms, CGAL %.3f ms\n",
+            p.part.triangles.size(), p.strip.triangles.size(), 1e3 * ours, 1e3 * cgal_seconds);
       }
       agree += cgal >= value.lower - 0.05 * tau && cgal <= value.upper + 0.05 * tau;
 #endif

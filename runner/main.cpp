@@ -290,6 +290,8 @@ int main_impl(int argc, char** argv) {
     }
     if (*validate) {
       const PipelineConfig config = load_pipeline_config(validate_file, builtin_registry());
+      // Building each node checks what only the node knows (e.g. segment.fuzzy's alternatives).
+      for (const auto& node : config.nodes) builtin_registry().find(node.impl)->create(node.params);
       int back = 0;
       for (const auto& e : config.edges) back += e.back ? 1 : 0;
       std::cout << validate_file << ": ok (" << config.nodes.size() << " nodes, "

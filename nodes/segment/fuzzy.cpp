@@ -13,6 +13,7 @@
 #include <numeric>
 #include <queue>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 
@@ -388,17 +389,82 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
   return label;
 }
 
+// estimate_strips, remembered: the same region is judged whole at one level, as a part of
+// several candidate decompositions, again as emitted, and by the hierarchies of other angular
+// weights. An entry holds the exact count if it is at most the cap it was computed with, else
+// only that the count exceeds that cap, so a hit returns what a fresh call would (the result
+// does not depend on the threads). Keyed by an FNV-1a hash of the part's coordinates and
+// triangles: parts cut out of the same faces the same way are bit-identical meshes.
+class EstimateCache {
+ public:
+  explicit EstimateCache(double tolerance) : tolerance_(tolerance) {}
+
+  int estimate(const Mesh& part, int cap) {
+    const std::uint64_t key = geometry_hash(part);
+    {
+      std::lock_guard lock(mutex_);
+      const auto it = entries_.find(key);
+      if (it != entries_.end()) {
+        const auto [count, computed_cap] = it->second;
+        if (count <= computed_cap) return count <= cap ? count : cap + 1;
+        if (cap <= computed_cap) return cap + 1;
+      }
+    }
+    const int count = estimate_strips(part, tolerance_, cap);
+    std::lock_guard lock(mutex_);
+    const auto [it, inserted] = entries_.try_emplace(key, count, cap);
+    if (!inserted) {
+      const auto [known, known_cap] = it->second;
+      if (known > known_cap && (count <= cap || cap > known_cap)) it->second = {count, cap};
+    }
+    return count;
+  }
+
+ private:
+  static std::uint64_t geometry_hash(const Mesh& part) {
+    std::uint64_t hash = 1469598103934665603ull;
+    auto mix = [&](std::uint64_t word) {
+      for (int byte = 0; byte < 8; ++byte) {
+        hash ^= (word >> (8 * byte)) & 0xff;
+        hash *= 1099511628211ull;
+      }
+    };
+    mix(part.n_vertices());
+    mix(part.n_faces());
+    for (auto v : part.vertices()) {
+      for (int i = 0; i < 3; ++i) {
+        std::uint64_t bits;
+        const double x = part.point(v)[i];
+        std::memcpy(&bits, &x, sizeof bits);
+        mix(bits);
+      }
+    }
+    for (auto f : part.faces()) {
+      for (auto v : part.fv_range(f)) mix(static_cast<std::uint64_t>(v.idx()));
+    }
+    return hash;
+  }
+
+  const double tolerance_;
+  std::mutex mutex_;
+  std::unordered_map<std::uint64_t, std::pair<int, int>> entries_;  // count, cap
+};
+
 class Hierarchy {
  public:
-  Hierarchy(const Mesh& mesh, const FaceGraph& graph, const FuzzySegmentOptions& options)
+  Hierarchy(const Mesh& mesh, const FaceGraph& graph, const FuzzySegmentOptions& options,
+            EstimateCache& estimates)
       : mesh_(mesh),
         graph_(graph),
         options_(options),
-        min_area_(options.min_area_fraction * graph.total_area) {}
+        min_area_(options.min_area_fraction * graph.total_area),
+        estimates_(estimates) {}
 
   // Leaf regions of `faces` (sorted model faces, connected), in a deterministic order.
-  std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth) const {
-    if (judge_by_strips()) return cheapest(faces, depth, std::numeric_limits<int>::max() / 2).leaves;
+  // Judged by strips, a decomposition is kept only if it costs at most `cap` strips.
+  std::vector<std::vector<int>> leaves(const std::vector<int>& faces, int depth,
+                                       int cap = std::numeric_limits<int>::max() / 2) const {
+    if (judge_by_strips()) return cheapest(faces, depth, cap).leaves;
     const std::vector<std::vector<std::vector<int>>> candidates = decompositions(faces, depth);
     if (candidates.empty()) return {faces};
     const std::vector<std::vector<int>>& children = candidates.back();
@@ -415,7 +481,8 @@ class Hierarchy {
   // neck on one side of a level's boundary and the head on the other) may still be cheaper as
   // one region. Merges the pair of adjacent leaves that saves the most estimated strips, until
   // no pair saves any (ties: the first pair in leaf order). Deterministic.
-  std::vector<std::vector<int>> merge_cheaper_neighbours(std::vector<std::vector<int>> leaves) const {
+  std::vector<std::vector<int>> merge_cheaper_neighbours(
+      std::vector<std::vector<int>> leaves) const {
     constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
     std::vector<int> cost(leaves.size());
     tbb::parallel_for(std::size_t{0}, leaves.size(),
@@ -509,7 +576,7 @@ class Hierarchy {
     int strips = 0;
     for (const Mesh& part : parts) {
       if (cap - strips < 1) return cap + 1;
-      strips += estimate(part, cap - strips);
+      strips += estimates_.estimate(part, cap - strips);
       if (strips > cap) return cap + 1;
     }
     return strips;
@@ -610,57 +677,6 @@ class Hierarchy {
 
   bool judge_by_strips() const { return options_.strip_tolerance > 0; }
 
-  // estimate_strips, remembered: the same region is judged whole at one level, as a part of
-  // several candidate decompositions, and again as emitted. An entry holds the exact count if
-  // it is at most the cap it was computed with, else only that the count exceeds that cap, so
-  // a hit returns what a fresh call would (the result does not depend on the threads).
-  int estimate(const Mesh& part, int cap) const {
-    const std::uint64_t key = geometry_hash(part);
-    {
-      std::lock_guard lock(estimates_mutex_);
-      const auto it = estimates_.find(key);
-      if (it != estimates_.end()) {
-        const auto [count, computed_cap] = it->second;
-        if (count <= computed_cap) return count <= cap ? count : cap + 1;
-        if (cap <= computed_cap) return cap + 1;
-      }
-    }
-    const int count = estimate_strips(part, options_.strip_tolerance, cap);
-    std::lock_guard lock(estimates_mutex_);
-    const auto [it, inserted] = estimates_.try_emplace(key, count, cap);
-    if (!inserted) {
-      const auto [known, known_cap] = it->second;
-      if (known > known_cap && (count <= cap || cap > known_cap)) it->second = {count, cap};
-    }
-    return count;
-  }
-
-  // FNV-1a over the vertex coordinates and the triangles: parts cut out of the same faces the
-  // same way are bit-identical meshes.
-  static std::uint64_t geometry_hash(const Mesh& part) {
-    std::uint64_t hash = 1469598103934665603ull;
-    auto mix = [&](std::uint64_t word) {
-      for (int byte = 0; byte < 8; ++byte) {
-        hash ^= (word >> (8 * byte)) & 0xff;
-        hash *= 1099511628211ull;
-      }
-    };
-    mix(part.n_vertices());
-    mix(part.n_faces());
-    for (auto v : part.vertices()) {
-      for (int i = 0; i < 3; ++i) {
-        std::uint64_t bits;
-        const double x = part.point(v)[i];
-        std::memcpy(&bits, &x, sizeof bits);
-        mix(bits);
-      }
-    }
-    for (auto f : part.faces()) {
-      for (auto v : part.fv_range(f)) mix(static_cast<std::uint64_t>(v.idx()));
-    }
-    return hash;
-  }
-
   // The faces of each label, labels in order of first appearance in `faces`.
   static std::vector<std::vector<int>> groups(const std::vector<int>& faces,
                                               const std::vector<int>& label) {
@@ -673,7 +689,6 @@ class Hierarchy {
     }
     return result;
   }
-
 
   bool may_split(const std::vector<int>& faces, int depth) const {
     if (faces.size() < 4) return false;
@@ -745,9 +760,17 @@ class Hierarchy {
   const FaceGraph& graph_;
   const FuzzySegmentOptions& options_;
   double min_area_;
-  mutable std::mutex estimates_mutex_;
-  mutable std::unordered_map<std::uint64_t, std::pair<int, int>> estimates_;  // count, cap
+  EstimateCache& estimates_;
 };
+
+FuzzySegmentOptions with_alternative(const FuzzySegmentOptions& options,
+                                     const FuzzyAlternative& alternative) {
+  FuzzySegmentOptions run = options;
+  run.angular_weight = alternative.angular_weight.value_or(options.angular_weight);
+  run.convex_eta = alternative.convex_eta.value_or(options.convex_eta);
+  run.fuzzy_epsilon = alternative.fuzzy_epsilon.value_or(options.fuzzy_epsilon);
+  return run;
+}
 
 void validate(const FuzzySegmentOptions& options) {
   auto fail = [](const std::string& what) {
@@ -761,6 +784,11 @@ void validate(const FuzzySegmentOptions& options) {
     fail("max_depth must be >= 1, got " + std::to_string(options.max_depth));
   if (!(options.angular_weight >= 0 && options.angular_weight <= 1))
     fail("angular_weight must be in [0, 1], got " + std::to_string(options.angular_weight));
+  for (const FuzzyAlternative& alternative : options.alternatives) {
+    FuzzySegmentOptions run = with_alternative(options, alternative);
+    run.alternatives.clear();
+    validate(run);
+  }
   if (!(options.convex_eta > 0 && options.convex_eta <= 1))
     fail("convex_eta must be in (0, 1], got " + std::to_string(options.convex_eta));
   if (!(options.fuzzy_epsilon >= 0 && options.fuzzy_epsilon < 0.5))
@@ -780,6 +808,41 @@ void validate(const FuzzySegmentOptions& options) {
 
 }  // namespace
 
+FuzzyAlternative parse_fuzzy_alternative(const std::string& text) {
+  FuzzyAlternative alternative;
+  std::istringstream words(text);
+  std::string word;
+  bool any = false;
+  while (words >> word) {
+    const std::size_t equals = word.find('=');
+    const std::string key = word.substr(0, equals);
+    double value = 0;
+    std::size_t used = 0;
+    try {
+      if (equals != std::string::npos) value = std::stod(word.substr(equals + 1), &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (equals == std::string::npos || used == 0 || used != word.size() - equals - 1) {
+      throw InvalidInputException("segment_fuzzy alternative '" + text +
+                                  "': expected setting=number, got '" + word + "'");
+    }
+    if (key == "angular_weight") {
+      alternative.angular_weight = value;
+    } else if (key == "convex_eta") {
+      alternative.convex_eta = value;
+    } else if (key == "fuzzy_epsilon") {
+      alternative.fuzzy_epsilon = value;
+    } else {
+      throw InvalidInputException("segment_fuzzy alternative '" + text + "': unknown setting '" +
+                                  key + "' (angular_weight, convex_eta, fuzzy_epsilon)");
+    }
+    any = true;
+  }
+  if (!any) throw InvalidInputException("segment_fuzzy alternative: empty");
+  return alternative;
+}
+
 std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& options) {
   require_segmentable(mesh, "segment_fuzzy");
   validate(options);
@@ -790,43 +853,66 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
     if (component[f] >= static_cast<int>(components.size())) components.resize(component[f] + 1);
     components[component[f]].push_back(static_cast<int>(f));
   }
-  const Hierarchy hierarchy(mesh, graph, options);
-  std::vector<int> labels(mesh.n_faces(), -1);
-  int next_label = 0;
-  for (const auto& faces : components) {
-    std::vector<std::vector<int>> leaves = hierarchy.leaves(faces, 0);
-    if (options.strip_tolerance > 0 && options.merge_neighbours && leaves.size() > 1)
-      leaves = hierarchy.merge_cheaper_neighbours(std::move(leaves));
-    for (const auto& leaf : leaves) {
-      for (int f : leaf) labels[f] = next_label;
-      ++next_label;
+  EstimateCache estimates(options.strip_tolerance);
+  // One hierarchy's regions as face labels, and whether it split anything. On a connected
+  // model, judged by strips, a decomposition costing more than `cap` is not looked for (the
+  // hierarchy's branches are cut off as soon as they cost more).
+  auto hierarchy_labels = [&](const FuzzySegmentOptions& run, int cap) {
+    const Hierarchy hierarchy(mesh, graph, run, estimates);
+    std::vector<int> labels(mesh.n_faces(), -1);
+    int next_label = 0;
+    for (const auto& faces : components) {
+      std::vector<std::vector<int>> leaves =
+          components.size() == 1 ? hierarchy.leaves(faces, 0, cap) : hierarchy.leaves(faces, 0);
+      if (run.strip_tolerance > 0 && run.merge_neighbours && leaves.size() > 1)
+        leaves = hierarchy.merge_cheaper_neighbours(std::move(leaves));
+      for (const auto& leaf : leaves) {
+        for (int f : leaf) labels[f] = next_label;
+        ++next_label;
+      }
     }
-  }
-  labels = consolidate_regions(graph, labels, options.min_area_fraction * graph.total_area);
-  LabelledSurface surface = labelled_surface(mesh, labels);
-  if (options.strip_tolerance <= 0 || next_label <= static_cast<int>(components.size())) {
-    if (options.straighten) {
-      straighten_boundaries(surface, {options.straighten_width * graph.mean_edge_length});
-    }
+    labels = consolidate_regions(graph, labels, run.min_area_fraction * graph.total_area);
+    return std::pair{labels, next_label > static_cast<int>(components.size())};
+  };
+  const double straighten_width = options.straighten_width * graph.mean_edge_length;
+  constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
+  if (options.strip_tolerance <= 0) {
+    LabelledSurface surface = labelled_surface(mesh, hierarchy_labels(options, kUnbounded).first);
+    if (options.straighten) straighten_boundaries(surface, {straighten_width});
     return parts_of(surface);
   }
   // The regions were judged on meshes cut out one at a time and before straightening: judge
-  // the parts as they will be emitted, straightened or not, against the model whole.
-  constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
-  std::vector<Mesh> best = parts_of(surface);
-  int best_cost = hierarchy.strips_of(best, kUnbounded);
-  if (options.straighten) {
-    straighten_boundaries(surface, {options.straighten_width * graph.mean_edge_length});
-    std::vector<Mesh> straightened = parts_of(surface);
-    const int cost = hierarchy.strips_of(straightened, best_cost);
-    if (cost <= best_cost) {
-      best = std::move(straightened);
+  // the parts as they will be emitted, straightened or not, against the model whole and
+  // against the hierarchies of the alternative settings. Ties keep the model whole, then the
+  // earlier settings, and the straightened parts over the others.
+  const Hierarchy judge(mesh, graph, options, estimates);
+  std::vector<int> component_labels = component;
+  std::vector<Mesh> best = parts_of(labelled_surface(mesh, component_labels));
+  int best_cost = judge.strips_of(best, kUnbounded);
+  std::vector<FuzzySegmentOptions> runs = {options};
+  for (const FuzzyAlternative& alternative : options.alternatives)
+    runs.push_back(with_alternative(options, alternative));
+  for (const FuzzySegmentOptions& run : runs) {
+    // Only a hierarchy that beats the best so far matters (as judged before straightening).
+    auto [labels, split] = hierarchy_labels(run, best_cost - 1);
+    if (!split) continue;
+    LabelledSurface surface = labelled_surface(mesh, labels);
+    std::vector<Mesh> parts = parts_of(surface);
+    int cost = judge.strips_of(parts, best_cost);
+    if (options.straighten) {
+      straighten_boundaries(surface, {straighten_width});
+      std::vector<Mesh> straightened = parts_of(surface);
+      const int straightened_cost = judge.strips_of(straightened, std::min(cost, best_cost));
+      if (straightened_cost <= cost) {
+        parts = std::move(straightened);
+        cost = straightened_cost;
+      }
+    }
+    if (cost < best_cost) {
+      best = std::move(parts);
       best_cost = cost;
     }
   }
-  std::vector<int> component_labels = component;
-  std::vector<Mesh> whole = parts_of(labelled_surface(mesh, component_labels));
-  if (hierarchy.strips_of(whole, best_cost) <= best_cost) return whole;
   return best;
 }
 

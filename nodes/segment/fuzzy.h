@@ -10,11 +10,24 @@
 // taken over the fuzzy region; the hierarchy stops by judging boundaries (necks and concave
 // creases stay) instead of by the spread of dihedral angles.
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/mesh.h"
 
 namespace papercraft {
+
+/// Settings of a further hierarchy that differ from the main options (unset: the main ones).
+struct FuzzyAlternative {
+  std::optional<double> angular_weight;
+  std::optional<double> convex_eta;
+  std::optional<double> fuzzy_epsilon;
+};
+
+/// Parses "angular_weight=0.5 fuzzy_epsilon=0.2" (settings separated by spaces).
+/// \throws InvalidInputException on an unknown setting or a value that is not a number.
+FuzzyAlternative parse_fuzzy_alternative(const std::string& text);
 
 struct FuzzySegmentOptions {
   /// Number of parts of a single (non-hierarchical) k-way decomposition, >= 2; 0 chooses the
@@ -64,6 +77,12 @@ struct FuzzySegmentOptions {
   /// With strip_tolerance > 0, also judge each part of a decomposition of three or more
   /// parts split off alone (the rest of the region whole).
   bool single_part_candidates = true;
+  /// With strip_tolerance > 0, the whole hierarchy is also built with each of these settings
+  /// (the others as above), and of all the decompositions the one that makes the fewest strips
+  /// is kept: which settings find a model's parts best differs from model to model (over the
+  /// libcgal-demo models at 2%, the defaults and these two each win somewhere). Each costs
+  /// about one more hierarchy; empty: the main settings only.
+  std::vector<FuzzyAlternative> alternatives = {{0.5, {}, {}}, {{}, {}, 0.2}};
   /// With strip_tolerance > 0, after the hierarchy merge the two adjacent parts (of any
   /// branches) whose union the refinement makes the most strips fewer of, while any pair saves.
   bool merge_neighbours = true;

@@ -3,6 +3,7 @@
 //
 //   segment: {impl: segment.fuzzy, params: {parts: 0, max_depth: 3}, to: [select]}
 
+#include "core/errors.h"
 #include "graph/registry.h"
 #include "nodes/segment/emit_parts.h"
 #include "nodes/segment/fuzzy.h"
@@ -21,6 +22,10 @@ void register_segment_fuzzy(Registry& registry) {
                  {"max_depth", ParamType::Integer, "3", "levels of the hierarchy"},
                  {"angular_weight", ParamType::Number, "0.8",
                   "weight of the angular term in the dual-graph distance (1 - delta of Katz-Tal)"},
+                 {"alternatives", ParamType::StringList, "[angular_weight=0.5, fuzzy_epsilon=0.2]",
+                  "with strip_estimate, also build the hierarchy with each of these settings "
+                  "(angular_weight, convex_eta, fuzzy_epsilon; several separated by spaces) and "
+                  "keep the decomposition that makes the fewest strips; [] for none"},
                  {"fuzzy_epsilon", ParamType::Number, "0.1", "width of the fuzzy region"},
                  {"convex_eta", ParamType::Number, "0.1",
                   "angular distance factor of convex edges (concave ones get 1)"},
@@ -51,6 +56,15 @@ void register_segment_fuzzy(Registry& registry) {
                   options.max_parts = static_cast<int>(params.integer("max_parts"));
                   options.max_depth = static_cast<int>(params.integer("max_depth"));
                   options.angular_weight = params.number("angular_weight");
+                  options.alternatives.clear();
+                  for (const std::string& text : params.strings("alternatives")) {
+                    try {
+                      options.alternatives.push_back(parse_fuzzy_alternative(text));
+                    } catch (const InvalidInputException& e) {
+                      throw ConfigException("segment.fuzzy: alternatives: " +
+                                            std::string(e.what()));
+                    }
+                  }
                   options.fuzzy_epsilon = params.number("fuzzy_epsilon");
                   options.convex_eta = params.number("convex_eta");
                   options.neck_ratio = params.number("neck_ratio");

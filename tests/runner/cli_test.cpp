@@ -62,6 +62,24 @@ TEST(Cli, ValidateReportsPositionAndExitCode2) {
       << r.output;
 }
 
+TEST(Cli, ValidateChecksWhatOnlyTheNodeKnows) {
+  const auto dir = testing::fresh_temp_dir("validate-node");
+  std::ofstream(dir / "bad.yaml")
+      << "nodes:\n  load: {impl: load.openmesh, to: [segment]}\n"
+         "  segment: {impl: segment.fuzzy, params: {alternatives: [depth=4]}, to: [select]}\n"
+         "  select: {impl: select.geodesic, to: [ruled]}\n"
+         "  ruled: {impl: ruled.twist_dp, to: [hausdorff]}\n"
+         "  hausdorff: {impl: hausdorff.bounded, to: {accept: [unfold], reject: [cut]}}\n"
+         "  cut: {impl: cut.harmonic, back: [select]}\n"
+         "  unfold: {impl: unfold.sequential, to: [merge]}\n"
+         "  merge: {impl: merge.congruent, to: [layout]}\n"
+         "  layout: {impl: layout.pages, to: [export]}\n"
+         "  export: {impl: export.files}\n";
+  const auto r = run_command("validate " + (dir / "bad.yaml").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("unknown setting 'depth'"), std::string::npos) << r.output;
+}
+
 TEST(Cli, GenerateWritesMesh) {
   const auto dir = testing::fresh_temp_dir("generate");
   const auto r = run_command("generate torus " + (dir / "torus.off").string());

@@ -197,7 +197,21 @@ TEST(SegmentFuzzy, RejectsBadInput) {
   expect_rejected([](FuzzySegmentOptions& o) { o.fuzzy_epsilon = 0.5; });
   expect_rejected([](FuzzySegmentOptions& o) { o.straighten_width = 0; });
   expect_rejected([](FuzzySegmentOptions& o) { o.min_area_fraction = -0.1; });
+  expect_rejected([](FuzzySegmentOptions& o) { o.alternatives = {{2.0, {}, {}}}; });
+  expect_rejected([](FuzzySegmentOptions& o) { o.alternatives = {{{}, {}, 0.7}}; });
   EXPECT_THROW(segment_fuzzy(Mesh()), InvalidInputException);
+}
+
+TEST(SegmentFuzzy, ParsesAlternatives) {
+  const FuzzyAlternative both = parse_fuzzy_alternative(" angular_weight=0.5  fuzzy_epsilon=0.2 ");
+  EXPECT_EQ(both.angular_weight, 0.5);
+  EXPECT_EQ(both.fuzzy_epsilon, 0.2);
+  EXPECT_FALSE(both.convex_eta.has_value());
+  EXPECT_EQ(parse_fuzzy_alternative("convex_eta=0.3").convex_eta, 0.3);
+  for (const char* bad : {"", "angular_weight", "angular_weight=", "angular_weight=0.5x",
+                          "angular_weight=half", "depth=4", "=0.5"}) {
+    EXPECT_THROW(parse_fuzzy_alternative(bad), InvalidInputException) << bad;
+  }
 }
 
 }  // namespace
