@@ -16,7 +16,7 @@ struct ParamSpec {
   ParamType type = ParamType::Number;
   std::string default_value;  // as written in YAML: "0.05", "true", "A4", "[pdf, svg]"
   std::string description;
-  std::vector<std::string> choices;  // for String / StringList: allowed values (empty: any)
+  std::vector<std::string> choices = {};  // for String / StringList: allowed values (empty: any)
 };
 
 const char* to_string(ParamType type);

@@ -112,7 +112,7 @@ class Execution {
     for (std::size_t i = 0; i < n; ++i) {
       const int concurrency = config_.nodes[i].concurrency;
       const std::size_t limit =
-          concurrency == 0 ? flow::unlimited : static_cast<std::size_t>(concurrency);
+          concurrency == 0 ? std::size_t{flow::unlimited} : static_cast<std::size_t>(concurrency);
       nodes_.push_back(std::make_unique<FlowNode>(
           graph, limit, [this, i](const Envelope& in, FlowNode::output_ports_type& ports) {
             run_node(static_cast<int>(i), in, ports);

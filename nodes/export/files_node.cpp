@@ -5,7 +5,6 @@
 //   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply], preset: print}}
 
 #include <algorithm>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -150,8 +149,9 @@ void register_export_files(Registry& registry) {
              }
              if (wants(formats, "svg")) {
                for (std::size_t page = 0; page < layout.pages.size(); ++page) {
-                 char name[32];
-                 std::snprintf(name, sizeof name, "pattern-%02zu.svg", page + 1);
+                 const std::string number = std::to_string(page + 1);
+                 const std::string name =
+                     "pattern-" + std::string(number.size() < 2 ? 1 : 0, '0') + number + ".svg";
                  write_file_atomic(dir / name,
                                    pattern_page_svg(layout, static_cast<int>(page), page_style));
                }
