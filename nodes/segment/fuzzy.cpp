@@ -394,7 +394,9 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
 // weights. An entry holds the exact count if it is at most the cap it was computed with, else
 // only that the count exceeds that cap, so a hit returns what a fresh call would (the result
 // does not depend on the threads). Keyed by an FNV-1a hash of the part's coordinates and
-// triangles: parts cut out of the same faces the same way are bit-identical meshes.
+// triangles: parts cut out of the same faces the same way are bit-identical meshes. A
+// collision (about 2^-64 a pair) could only mislead the choice of parts, never what is
+// certified: every strip is still decided against its own part.
 class EstimateCache {
  public:
   explicit EstimateCache(double tolerance) : tolerance_(tolerance) {}
