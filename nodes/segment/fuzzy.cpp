@@ -390,8 +390,8 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
 }
 
 // estimate_strips, remembered: the same region is judged whole at one level, as a part of
-// several candidate decompositions, again as emitted, and by the hierarchies of other angular
-// weights. An entry holds the exact count if it is at most the cap it was computed with, else
+// several candidate decompositions, again as emitted, and by the hierarchies of the
+// alternative settings. An entry holds the exact count if it is at most the cap it was computed with, else
 // only that the count exceeds that cap, so a hit returns what a fresh call would (the result
 // does not depend on the threads). Keyed by an FNV-1a hash of the part's coordinates and
 // triangles: parts cut out of the same faces the same way are bit-identical meshes. A
