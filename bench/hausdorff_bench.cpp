@@ -292,24 +292,29 @@ Recorder& recorder() {
   return instance;
 }
 
-/// hausdorff.bounded's decision, plus a copy of every pair it decides.
+/// hausdorff.bounded's decision with its parameters, plus a copy of every pair it decides.
 void register_recording_node(Registry& registry) {
+  const NodeSpec& bounded = *builtin_registry().find("hausdorff.bounded");
   registry.add({"hausdorff.recording",
                 "hausdorff.bounded that keeps every (part, strip) pair (benchmark only)",
-                MessageType::of<StripCandidate>(),
-                false,
-                hausdorff_ports(),
-                {},
-                [](const Params&) {
-                  return make_body([](const Envelope& in, Emitter& out) {
-                    decide_and_emit(in, out,
-                                    [](const TriangleMesh& a, const TriangleMesh& b, double tau) {
-                                      {
-                                        std::lock_guard lock(recorder().mutex);
-                                        recorder().pairs.push_back({a, b});
-                                      }
-                                      return certified_hausdorff_within(a, b, tau);
-                                    });
+                bounded.input,
+                bounded.gathers,
+                bounded.outputs,
+                bounded.params,
+                [](const Params& params) {
+                  BoundedHausdorffOptions options;
+                  options.precision = params.number("precision");
+                  options.max_evaluations =
+                      static_cast<std::size_t>(params.integer("max_evaluations"));
+                  return make_body([options](const Envelope& in, Emitter& out) {
+                    decide_and_emit(in, out, [&](const TriangleMesh& a, const TriangleMesh& b,
+                                                 double tau) {
+                      {
+                        std::lock_guard lock(recorder().mutex);
+                        recorder().pairs.push_back({a, b});
+                      }
+                      return certified_hausdorff_within(a, b, tau, options);
+                    });
                   });
                 }});
 }
@@ -322,10 +327,15 @@ std::vector<RecordedPair> record_pairs(const std::filesystem::path& mesh,
     register_recording_node(r);
     return r;
   }();
+  // The default config with its hausdorff implementation swapped (same parameters).
   std::string text = default_config_text();
-  const std::string from = "hausdorff.bounded";
-  text.replace(text.find(from), from.size(), "hausdorff.recording");
-  text.replace(text.find("params: {precision: 0.05}, "), 27, "");
+  const std::string from = "impl: hausdorff.bounded";
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) {
+    std::fprintf(stderr, "the default config has no '%s'\n", from.c_str());
+    std::exit(2);
+  }
+  text.replace(at, from.size(), "impl: hausdorff.recording");
   auto settings = std::make_shared<RunSettings>();
   settings->tolerance = parse_tolerance(tolerance);
   settings->output_dir = std::filesystem::temp_directory_path() / "papercraft-hausdorff-pairs";

@@ -391,9 +391,9 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
 
 // estimate_strips, remembered: the same region is judged whole at one level, as a part of
 // several candidate decompositions, again as emitted, and by the hierarchies of the
-// alternative settings. An entry holds the exact count if it is at most the cap it was computed with, else
-// only that the count exceeds that cap, so a hit returns what a fresh call would (the result
-// does not depend on the threads). Keyed by an FNV-1a hash of the part's coordinates and
+// alternative settings. An entry holds the exact count if it is at most the cap it was
+// computed with, else only that the count exceeds that cap, so a hit returns what a fresh call
+// would (the result does not depend on the threads). Keyed by an FNV-1a hash of the part's coordinates and
 // triangles: parts cut out of the same faces the same way are bit-identical meshes. A
 // collision (about 2^-64 a pair) could only mislead the choice of parts, never what is
 // certified: every strip is still decided against its own part.
@@ -874,7 +874,7 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
       }
     }
     labels = consolidate_regions(graph, labels, run.min_area_fraction * graph.total_area);
-    return std::pair{labels, next_label > static_cast<int>(components.size())};
+    return std::pair{std::move(labels), next_label > static_cast<int>(components.size())};
   };
   const double straighten_width = options.straighten_width * graph.mean_edge_length;
   constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
