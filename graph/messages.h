@@ -7,11 +7,10 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "core/pattern.h"
 #include "core/strip.h"
 
 namespace papercraft {
-
-struct PatternLayout;  // nodes/layout/pages.h
 
 /// Facts about the input mesh, for report.json.
 struct MeshSummary {

@@ -2,9 +2,6 @@
 
 #include <spdlog/spdlog.h>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -15,248 +12,11 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "core/labelled_soup.h"
+#include "core/laplacian.h"
+#include "core/union_find.h"
 
 namespace papercraft {
-namespace {
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : parent_(n) {
-    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
-  }
-  std::size_t find(std::size_t x) {
-    while (parent_[x] != x) {
-      parent_[x] = parent_[parent_[x]];
-      x = parent_[x];
-    }
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return;
-    if (a < b) std::swap(a, b);
-    parent_[a] = b;  // the smallest index is the root, which keeps orders deterministic
-  }
-
- private:
-  std::vector<std::size_t> parent_;
-};
-
-std::optional<OpenMesh::VPropHandleT<int>> input_vertex_handle(const Mesh& mesh) {
-  OpenMesh::VPropHandleT<int> handle;
-  if (!mesh.get_property_handle(handle, kInputVertexProperty)) return std::nullopt;
-  return handle;
-}
-
-// ---------------------------------------------------------------------------------------
-// Harmonic field
-
-double clamped_cotangent(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v, double limit) {
-  const double cross = OpenMesh::cross(u, v).norm();
-  const double dot = OpenMesh::dot(u, v);
-  if (cross > 0.0) return std::clamp(dot / cross, -limit, limit);
-  if (dot == 0.0) return 0.0;
-  return dot > 0.0 ? limit : -limit;
-}
-
-// Reduced system A x = b over the free vertices; A is the cotangent Laplacian restricted to
-// them (symmetric positive definite when every component has a Dirichlet vertex).
-struct ReducedSystem {
-  Eigen::SparseMatrix<double> matrix;
-  Eigen::VectorXd rhs;
-};
-
-ReducedSystem assemble(const Mesh& part, const std::vector<double>& weights,
-                       const std::vector<int>& free_index, const Eigen::VectorXd& fixed_value) {
-  const int n_free = static_cast<int>(
-      std::count_if(free_index.begin(), free_index.end(), [](int i) { return i >= 0; }));
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(4 * part.n_edges());
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_free);
-  for (auto e : part.edges()) {
-    const double w = weights[e.idx()];
-    const int a = e.v0().idx();
-    const int b = e.v1().idx();
-    const int ia = free_index[a];
-    const int ib = free_index[b];
-    if (ia >= 0) triplets.emplace_back(ia, ia, w);
-    if (ib >= 0) triplets.emplace_back(ib, ib, w);
-    if (ia >= 0 && ib >= 0) {
-      triplets.emplace_back(ia, ib, -w);
-      triplets.emplace_back(ib, ia, -w);
-    } else if (ia >= 0) {
-      rhs[ia] += w * fixed_value[b];
-    } else if (ib >= 0) {
-      rhs[ib] += w * fixed_value[a];
-    }
-  }
-  ReducedSystem system;
-  system.matrix.resize(n_free, n_free);
-  system.matrix.setFromTriplets(triplets.begin(), triplets.end());
-  system.rhs = std::move(rhs);
-  return system;
-}
-
-std::optional<Eigen::VectorXd> solve_ldlt(const ReducedSystem& system) {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(system.matrix);
-  if (solver.info() != Eigen::Success) return std::nullopt;
-  // LDLT also factors indefinite matrices; a non-positive pivot means the weights are broken.
-  if (solver.vectorD().size() > 0 && solver.vectorD().minCoeff() <= 0.0) return std::nullopt;
-  Eigen::VectorXd x = solver.solve(system.rhs);
-  if (solver.info() != Eigen::Success || !x.allFinite()) return std::nullopt;
-  return x;
-}
-
-std::optional<Eigen::VectorXd> solve_lu(const ReducedSystem& system) {
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver;
-  solver.compute(system.matrix);
-  if (solver.info() != Eigen::Success) return std::nullopt;
-  Eigen::VectorXd x = solver.solve(system.rhs);
-  if (solver.info() != Eigen::Success || !x.allFinite()) return std::nullopt;
-  return x;
-}
-
-// Non-negative weights with a tiny positive floor: an irreducible M-matrix per component, so
-// the reduced system is SPD whatever the triangle shapes.
-std::vector<double> clamp_weights(const std::vector<double>& weights) {
-  double sum = 0.0;
-  int count = 0;
-  for (double w : weights) {
-    if (w > 0.0) {
-      sum += w;
-      ++count;
-    }
-  }
-  const double floor = 1e-6 * (count > 0 ? sum / count : 1.0);
-  std::vector<double> clamped(weights.size());
-  for (std::size_t i = 0; i < weights.size(); ++i) clamped[i] = std::max(weights[i], floor);
-  return clamped;
-}
-
-// ---------------------------------------------------------------------------------------
-// Building manifold pieces from a labelled triangle soup over a shared vertex array.
-
-struct LabelledSoup {
-  std::vector<OpenMesh::Vec3d> points;
-  std::vector<OpenMesh::Vec2d> texcoords;  // empty if the part has none
-  std::vector<int> input_vertex;           // empty if the part has no "v:input_vertex"
-  std::vector<Triangle> triangles;
-  std::vector<int> labels;  // faces with different labels are never in one piece
-};
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-std::vector<Mesh> build_pieces(const LabelledSoup& soup) {
-  const std::size_t n_faces = soup.triangles.size();
-  // Faces of each undirected edge (at most two: the soup refines a manifold mesh).
-  std::unordered_map<std::uint64_t, std::vector<int>> edge_faces;
-  edge_faces.reserve(3 * n_faces);
-  for (std::size_t f = 0; f < n_faces; ++f) {
-    const Triangle& t = soup.triangles[f];
-    for (int k = 0; k < 3; ++k)
-      edge_faces[edge_key(t[k], t[(k + 1) % 3])].push_back(static_cast<int>(f));
-  }
-
-  // Pieces: faces of equal label connected through edges. Fans: corners (face, vertex) of
-  // one piece connected through edges at that vertex; each fan becomes its own output vertex.
-  UnionFind pieces(n_faces);
-  UnionFind fans(3 * n_faces);
-  auto corner = [&](int face, int vertex) {
-    const Triangle& t = soup.triangles[face];
-    const int k = t[0] == vertex ? 0 : (t[1] == vertex ? 1 : 2);
-    return static_cast<std::size_t>(3 * face + k);
-  };
-  for (const auto& [key, faces] : edge_faces) {
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      for (std::size_t j = i + 1; j < faces.size(); ++j) {
-        const int f = faces[i];
-        const int g = faces[j];
-        if (soup.labels[f] != soup.labels[g]) continue;
-        pieces.unite(f, g);
-        const int a = static_cast<int>(key >> 32);
-        const int b = static_cast<int>(key & 0xffffffffu);
-        fans.unite(corner(f, a), corner(g, a));
-        fans.unite(corner(f, b), corner(g, b));
-      }
-    }
-  }
-
-  std::vector<int> piece_of_root(n_faces, -1);
-  std::vector<std::vector<int>> piece_faces;
-  std::vector<int> piece_label;
-  for (std::size_t f = 0; f < n_faces; ++f) {
-    const std::size_t root = pieces.find(f);
-    if (piece_of_root[root] < 0) {
-      piece_of_root[root] = static_cast<int>(piece_faces.size());
-      piece_faces.emplace_back();
-      piece_label.push_back(soup.labels[f]);
-    }
-    piece_faces[piece_of_root[root]].push_back(static_cast<int>(f));
-  }
-  std::vector<std::size_t> order(piece_faces.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return piece_label[a] < piece_label[b]; });
-
-  const bool has_texcoords = !soup.texcoords.empty();
-  const bool has_input_vertex = !soup.input_vertex.empty();
-  std::vector<Mesh> result;
-  result.reserve(order.size());
-  std::unordered_map<std::size_t, Mesh::VertexHandle> vertex_of_fan;
-  for (std::size_t p : order) {
-    Mesh mesh;
-    if (has_texcoords) mesh.request_vertex_texcoords2D();
-    OpenMesh::VPropHandleT<int> input_vertex;
-    if (has_input_vertex) mesh.add_property(input_vertex, kInputVertexProperty);
-    // Output vertices follow the order of the soup's vertices (input vertices first, in
-    // their order), so an uncut component keeps its indices.
-    std::vector<std::pair<int, std::size_t>> used;  // (soup vertex, fan)
-    for (int f : piece_faces[p])
-      for (int v : soup.triangles[f]) used.emplace_back(v, fans.find(corner(f, v)));
-    std::sort(used.begin(), used.end());
-    used.erase(std::unique(used.begin(), used.end()), used.end());
-    vertex_of_fan.clear();
-    for (const auto& [v, fan] : used) {
-      const auto handle = mesh.add_vertex(soup.points[v]);
-      vertex_of_fan.emplace(fan, handle);
-      if (has_texcoords) mesh.set_texcoord2D(handle, soup.texcoords[v]);
-      if (has_input_vertex) mesh.property(input_vertex, handle) = soup.input_vertex[v];
-    }
-    auto vertex = [&](int face, int v) { return vertex_of_fan.at(fans.find(corner(face, v))); };
-    for (int f : piece_faces[p]) {
-      const Triangle& t = soup.triangles[f];
-      auto added = mesh.add_face(vertex(f, t[0]), vertex(f, t[1]), vertex(f, t[2]));
-      if (!added.is_valid()) {
-        throw TopologyException("building a piece: refined triangle " + std::to_string(f) +
-                                " (vertices " + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
-                                ", " + std::to_string(t[2]) +
-                                ") cannot be added to its piece without a non-manifold edge");
-      }
-    }
-    result.push_back(std::move(mesh));
-  }
-  return result;
-}
-
-LabelledSoup soup_of(const Mesh& mesh) {
-  LabelledSoup soup;
-  soup.points.reserve(mesh.n_vertices());
-  for (auto v : mesh.vertices()) soup.points.push_back(mesh.point(v));
-  if (mesh.has_vertex_texcoords2D()) {
-    for (auto v : mesh.vertices()) soup.texcoords.push_back(mesh.texcoord2D(v));
-  }
-  if (auto handle = input_vertex_handle(mesh)) {
-    for (auto v : mesh.vertices()) soup.input_vertex.push_back(mesh.property(*handle, v));
-  }
-  return soup;
-}
-
-}  // namespace
 
 Eigen::VectorXd harmonic_field(const Mesh& part, const std::vector<int>& zero_vertices,
                                const std::vector<int>& one_vertices,
@@ -309,20 +69,16 @@ Eigen::VectorXd harmonic_field(const Mesh& part, const std::vector<int>& zero_ve
   }
   if (n_free == 0) return field;
 
-  // Meyer et al. 2003, eq. (8): w_ij = (cot alpha_ij + cot beta_ij) / 2.
-  std::vector<double> weights(part.n_edges(), 0.0);
-  for (auto f : part.faces()) {
-    for (auto h : f.halfedges()) {
-      const auto opposite = part.point(h.next().to());
-      weights[h.edge().idx()] +=
-          0.5 * clamped_cotangent(part.point(h.from()) - opposite, part.point(h.to()) - opposite,
-                                  options.max_cotangent);
-    }
-  }
-
+  const std::vector<double> weights = cotangent_edge_weights(part, options.max_cotangent);
+  auto system = [&](const std::vector<double>& w) {
+    std::vector<WeightedEdge> edges;
+    edges.reserve(part.n_edges());
+    for (auto e : part.edges()) edges.push_back({e.v0().idx(), e.v1().idx(), w[e.idx()]});
+    return assemble_dirichlet(edges, free_index, field);
+  };
   std::optional<Eigen::VectorXd> solution;
   if (!options.clamp_negative_weights) {
-    solution = solve_ldlt(assemble(part, weights, free_index, field));
+    solution = solve_dirichlet(system(weights));
     if (!solution) {
       spdlog::debug(
           "harmonic_field: cotangent system not positive definite ({} free vertices); "
@@ -331,9 +87,9 @@ Eigen::VectorXd harmonic_field(const Mesh& part, const std::vector<int>& zero_ve
     }
   }
   if (!solution) {
-    const ReducedSystem clamped = assemble(part, clamp_weights(weights), free_index, field);
-    solution = solve_ldlt(clamped);
-    if (!solution) solution = solve_lu(clamped);
+    const DirichletSystem floored = system(floored_weights(weights));
+    solution = solve_dirichlet(floored);
+    if (!solution) solution = solve_dirichlet(floored, /*lu=*/true);
   }
   if (!solution) {
     throw SolverException("harmonic_field: the Laplace system on " + std::to_string(n_free) +
@@ -476,7 +232,7 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
   for (int v = 0; v < n; ++v)
     if (snapped[v]) side[v] = 0;
 
-  LabelledSoup soup = soup_of(part);
+  LabelledSoup soup = soup_of_vertices(part);
   std::vector<int> edge_vertex(part.n_edges(), -1);
   for (auto e : part.edges()) {
     const int a = e.v0().idx();
@@ -493,11 +249,15 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
 
   soup.triangles.reserve(part.n_faces() + 2 * part.n_edges() / 3);
   soup.labels.reserve(soup.triangles.capacity());
+  soup.origin_face.reserve(soup.triangles.capacity());
+  int origin = 0;
   auto emit = [&](int a, int b, int c, int label) {
     soup.triangles.push_back({a, b, c});
+    soup.origin_face.push_back(origin);
     soup.labels.push_back(label);
   };
   for (auto face : part.faces()) {
+    origin = face.idx();
     int corner[3];
     int crossing[3];  // new vertex on the edge opposite corner k, or -1
     int k = 0;
@@ -548,20 +308,6 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
   const bool has_below = std::find(soup.labels.begin(), soup.labels.end(), -1) != soup.labels.end();
   const bool has_above = std::find(soup.labels.begin(), soup.labels.end(), 1) != soup.labels.end();
   if (!has_below || !has_above) return {part};
-  return build_pieces(soup);
-}
-
-std::vector<Mesh> split_connected_components(const Mesh& mesh) {
-  require_no_deleted_elements(mesh, "split_connected_components");
-  LabelledSoup soup = soup_of(mesh);
-  soup.triangles.reserve(mesh.n_faces());
-  for (auto face : mesh.faces()) {
-    Triangle t{};
-    int k = 0;
-    for (auto v : face.vertices()) t[k++] = v.idx();
-    soup.triangles.push_back(t);
-  }
-  soup.labels.assign(soup.triangles.size(), 0);
   return build_pieces(soup);
 }
 

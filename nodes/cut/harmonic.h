@@ -84,11 +84,4 @@ struct CutOptions {
 std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, double value,
                                     const CutOptions& options = {});
 
-/// The connected components (through edges) of `mesh`, each a Mesh with compact indices;
-/// vertices shared by two fans of faces are duplicated and isolated vertices dropped.
-/// Texture coordinates and "v:input_vertex" are carried over. Ordered by lowest face index.
-/// \pre mesh has no deleted elements.
-/// \throws InvalidInputException if mesh has deleted elements.
-std::vector<Mesh> split_connected_components(const Mesh& mesh);
-
 }  // namespace papercraft

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "nodes/select/geodesic.h"
+#include "core/graph_distance.h"
 
 namespace papercraft {
 
@@ -34,26 +34,6 @@ double median(const Eigen::VectorXd& field) {
 
 }  // namespace
 
-std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps) {
-  int current = 0;
-  std::pair<int, int> best{0, 0};
-  double best_distance = -1.0;
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    const auto distance = edge_graph_distances(part, {current});
-    int far = current;
-    for (std::size_t v = 0; v < distance.size(); ++v) {
-      if (std::isfinite(distance[v]) && distance[v] > distance[far]) far = static_cast<int>(v);
-    }
-    if (distance[far] > best_distance) {
-      best_distance = distance[far];
-      best = {current, far};
-    }
-    if (far == current) break;
-    current = far;
-  }
-  return best;
-}
-
 WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
                                const std::vector<int>& second, const Vec3& witness,
                                const WitnessCutOptions& options) {
@@ -74,7 +54,7 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   auto across = [&]() -> const Eigen::VectorXd* {
     if (!across_ready) {
       across_ready = true;
-      const auto [from, to] = farthest_vertex_pair(part);
+      const auto [from, to] = farthest_vertex_pair(part, 4);
       if (from != to) g = harmonic_field(part, {from}, {to}, options.harmonic);
     }
     return g.size() > 0 ? &g : nullptr;

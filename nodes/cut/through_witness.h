@@ -43,8 +43,4 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
                             const std::vector<int>& second, const std::vector<int>& loop,
                             const WitnessCutOptions& options = {});
 
-/// The two vertices found by farthest-point sweeps over the edge graph (approximately the
-/// pair of largest geodesic distance).
-std::pair<int, int> farthest_vertex_pair(const Mesh& part, int sweeps = 4);
-
 }  // namespace papercraft

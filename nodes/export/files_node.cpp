@@ -15,7 +15,6 @@
 #include "nodes/export/pdf.h"
 #include "nodes/export/report.h"
 #include "nodes/export/svg.h"
-#include "nodes/layout/pages.h"
 
 namespace papercraft {
 

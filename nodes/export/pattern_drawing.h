@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "nodes/layout/pages.h"
+#include "core/pattern.h"
 
 namespace papercraft {
 
@@ -70,7 +70,7 @@ struct DrawLayer {
 };
 
 /// The texture of a page: one patch per triangle of every piece with uvs (clipped to the
-/// triangle) and the patches of its tabs (TexturePatch in nodes/layout/pages.h).
+/// triangle) and the patches of its tabs (TexturePatch in core/pattern.h).
 std::vector<TexturePatch> page_texture_patches(const Page& page);
 
 /// The layers of page `page_index` of `layout`, bottom first (see the file comment).

@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "nodes/export/pattern_drawing.h"
-#include "nodes/layout/pages.h"
+#include "core/pattern.h"
 
 namespace papercraft {
 

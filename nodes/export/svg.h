@@ -7,7 +7,7 @@
 #include <string>
 
 #include "nodes/export/pattern_drawing.h"
-#include "nodes/layout/pages.h"
+#include "core/pattern.h"
 
 namespace papercraft {
 

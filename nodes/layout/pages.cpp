@@ -9,6 +9,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <queue>
@@ -19,13 +20,13 @@
 #include <utility>
 
 #include "core/errors.h"
-#include "nodes/unfold/flat_boundary.h"
+#include "core/edge_map.h"
+#include "core/flat_boundary.h"
 
 namespace papercraft {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegree = kPi / 180.0;
+constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kFitSlack = 1e-7;  // mm; rounding in rotations must not reject a fit
 // Text boxes: an advance of 0.6 em per character (sans-serif digits and capitals) and
 // 0.6 em either side of the centre line, as the exporters centre text.
@@ -148,7 +149,7 @@ OrientedBox tightest_box(const std::vector<Vec2>& hull, double width, double hei
   }
   *fits = best_fitting.has_value();
   OrientedBox box = best_fitting ? *best_fitting : *best_any;
-  if (box.size.y() > box.size.x()) box = oriented_box(hull, box.angle + kPi / 2);
+  if (box.size.y() > box.size.x()) box = oriented_box(hull, box.angle + std::numbers::pi / 2);
   return box;
 }
 
@@ -413,11 +414,6 @@ PackResult pack_with_spacing(const std::vector<Vec2>& sizes, double bin_width, d
 // ---------------------------------------------------------------------------------------
 // Strips, pieces, seams.
 
-std::uint64_t edge_key(int a, int b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
 struct StripData {
   const FlatStrip* strip = nullptr;
   std::vector<Vec2> points;                                    // vertices2d in mm
@@ -509,7 +505,7 @@ StripData prepare_strip(const FlatStrip& strip, double mm_per_unit) {
     const Triangle& tri = strip.triangles[t];
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
     for (int i = 0; i < 3; ++i) {
-      if (!data.owner.emplace(edge_key(tri[i], tri[(i + 1) % 3]), t).second)
+      if (!data.owner.emplace(directed_edge_key(tri[i], tri[(i + 1) % 3]), t).second)
         throw InvalidInputException(name + " edge " + std::to_string(tri[i]) + "-" +
                                     std::to_string(tri[(i + 1) % 3]) +
                                     " belongs to two triangles in the same direction");
@@ -518,8 +514,8 @@ StripData prepare_strip(const FlatStrip& strip, double mm_per_unit) {
   }
   for (int i = 0; i < static_cast<int>(strip.boundary.size()); ++i) {
     const BoundaryEdge& e = strip.boundary[i];
-    const std::uint64_t key = edge_key(e.v0, e.v1);
-    if (!data.owner.count(key) || data.owner.count(edge_key(e.v1, e.v0)))
+    const std::uint64_t key = directed_edge_key(e.v0, e.v1);
+    if (!data.owner.count(key) || data.owner.count(directed_edge_key(e.v1, e.v0)))
       throw InvalidInputException(name + " boundary edge " + std::to_string(e.v0) + "-" +
                                   std::to_string(e.v1) +
                                   " is not a boundary edge of its triangles with the strip on "
@@ -544,7 +540,7 @@ std::vector<std::vector<PieceEdge>> piece_loops(StripData& data, const std::vect
   std::unordered_map<int, char> in_piece;
   for (int t : triangles) in_piece[t] = 1;
   auto inner = [&](int a, int b) {  // (a, b) has a piece triangle on its right too
-    auto it = data.owner.find(edge_key(b, a));
+    auto it = data.owner.find(directed_edge_key(b, a));
     return it != data.owner.end() && in_piece.count(it->second);
   };
   auto third = [&](int t, int a, int b) {
@@ -571,17 +567,17 @@ std::vector<std::vector<PieceEdge>> piece_loops(StripData& data, const std::vect
       PieceEdge edge;
       edge.v0 = current.first;
       edge.v1 = current.second;
-      const std::uint64_t key = edge_key(edge.v0, edge.v1);
+      const std::uint64_t key = directed_edge_key(edge.v0, edge.v1);
       if (auto b = data.boundary_of.find(key); b != data.boundary_of.end()) {
         const BoundaryEdge& given = strip.boundary[b->second];
         edge.kind = given.kind;
         if (given.kind == EdgeKind::Seam) edge.label = given.label;
       } else if (auto s = data.split_label.find(
-                     edge_key(std::min(edge.v0, edge.v1), std::max(edge.v0, edge.v1)));
+                     directed_edge_key(std::min(edge.v0, edge.v1), std::max(edge.v0, edge.v1)));
                  s != data.split_label.end()) {
         edge.kind = EdgeKind::Seam;
         edge.label = s->second;
-      } else if (!data.owner.count(edge_key(edge.v1, edge.v0)) && !data.missing_boundary_warned) {
+      } else if (!data.owner.count(directed_edge_key(edge.v1, edge.v0)) && !data.missing_boundary_warned) {
         data.missing_boundary_warned = true;
         warnings.push_back(strip_name(strip) + ": boundary edge " + std::to_string(edge.v0) + "-" +
                            std::to_string(edge.v1) +
@@ -590,7 +586,7 @@ std::vector<std::vector<PieceEdge>> piece_loops(StripData& data, const std::vect
       loop.push_back(edge);
       // Rotate around v1 through the piece's triangles to the next boundary edge.
       int a = current.first, b = current.second;
-      int t = data.owner.at(edge_key(a, b));
+      int t = data.owner.at(directed_edge_key(a, b));
       std::pair<int, int> next{-1, -1};
       for (std::size_t guard = 0; guard <= triangles.size(); ++guard) {
         const int c = third(t, a, b);
@@ -598,7 +594,7 @@ std::vector<std::vector<PieceEdge>> piece_loops(StripData& data, const std::vect
           next = {b, c};
           break;
         }
-        t = data.owner.at(edge_key(c, b));
+        t = data.owner.at(directed_edge_key(c, b));
         a = c;
       }
       if (next.first < 0) break;
@@ -633,7 +629,7 @@ std::vector<std::vector<int>> components(const StripData& data, const std::vecto
       result[id].push_back(t);
       const Triangle& tri = data.strip->triangles[t];
       for (int i = 0; i < 3; ++i) {
-        auto it = data.owner.find(edge_key(tri[(i + 1) % 3], tri[i]));
+        auto it = data.owner.find(directed_edge_key(tri[(i + 1) % 3], tri[i]));
         if (it == data.owner.end()) continue;
         auto c = component.find(it->second);
         if (c != component.end() && c->second < 0) {
@@ -672,7 +668,7 @@ std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& s
     if (distances) distances->push_back(d);
     const Triangle& tri = strip.triangles[t];
     for (int i = 0; i < 3; ++i) {
-      auto it = data.owner.find(edge_key(tri[(i + 1) % 3], tri[i]));
+      auto it = data.owner.find(directed_edge_key(tri[(i + 1) % 3], tri[i]));
       if (it == data.owner.end()) continue;
       auto n = distance.find(it->second);
       if (n == distance.end() || done.count(it->second)) continue;
@@ -772,9 +768,9 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double
         const Triangle& tri = data.strip->triangles[t];
         for (int i = 0; i < 3; ++i) {
           const int a = tri[i], b = tri[(i + 1) % 3];
-          auto it = data.owner.find(edge_key(b, a));
+          auto it = data.owner.find(directed_edge_key(b, a));
           if (it != data.owner.end() && in_head.count(it->second))
-            data.split_label[edge_key(std::min(a, b), std::max(a, b))] = label;
+            data.split_label[directed_edge_key(std::min(a, b), std::max(a, b))] = label;
         }
       }
       work.push_back(std::move(part));
@@ -1171,7 +1167,7 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
         t = at_start ? turn(runs[neighbour_run].back(), run.front())
                      : turn(run.back(), runs[neighbour_run].front());
       }
-      if (t < 0) angle = std::min(angle, 0.5 * (kPi + t) - 0.5 * kDegree);
+      if (t < 0) angle = std::min(angle, 0.5 * (std::numbers::pi + t) - 0.5 * kDegree);
       return angle;
     };
     const double start_angle = end_angle(true), stop_angle = end_angle(false);
@@ -1309,7 +1305,7 @@ std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
     for (int i = 0; i < 3; ++i) {
       const int a = tri[i], b = tri[(i + 1) % 3], c = tri[(i + 2) % 3];
       if (a > b) continue;
-      auto it = data.owner.find(edge_key(b, a));
+      auto it = data.owner.find(directed_edge_key(b, a));
       if (it == data.owner.end() || !in_piece.count(it->second)) continue;
       const Triangle& other = strip.triangles[it->second];
       int d = -1;
@@ -1643,7 +1639,7 @@ std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
     const StripData& other = strips[pieces[p2].strip];
     const PieceEdge& f = pieces[p2].loops[l2][i2];
     const FlatStrip& strip2 = *other.strip;
-    auto owner = other.owner.find(edge_key(f.v0, f.v1));
+    auto owner = other.owner.find(directed_edge_key(f.v0, f.v1));
     if (!strip2.uvs.empty() && owner != other.owner.end()) {
       const int d = third(strip2, owner->second, f.v0, f.v1);
       const Vec2 p0 = other.points[f.v0], p1 = other.points[f.v1], q = other.points[d];
@@ -1660,7 +1656,7 @@ std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
   }
   const FlatStrip& strip = *data.strip;
   if (strip.uvs.empty()) return std::nullopt;
-  auto owner = data.owner.find(edge_key(e.v0, e.v1));
+  auto owner = data.owner.find(directed_edge_key(e.v0, e.v1));
   if (owner == data.owner.end()) return std::nullopt;
   const int c = third(strip, owner->second, e.v0, e.v1);
   if (c < 0) return std::nullopt;
@@ -1746,7 +1742,7 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
   double theta = -box.angle;
   double min_x = box.min.x(), max_y = box.min.y() + box.size.y();
   if (at.rotated) {
-    theta += kPi / 2;
+    theta += std::numbers::pi / 2;
     min_x = -(box.min.y() + box.size.y());
     max_y = box.min.x() + box.size.x();
   }

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "nodes/merge/collect.h"
-#include "nodes/unfold/seams.h"
+#include "core/seams.h"
 
 namespace papercraft {
 

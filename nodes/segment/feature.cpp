@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <queue>
 #include <string>
@@ -14,7 +15,6 @@
 namespace papercraft {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Dijkstra from one vertex over the edges accepted by `usable`, stopped at `limit`; `settle` is
 // called with each vertex in order of distance and returns true to stop.
@@ -126,7 +126,7 @@ std::vector<Mesh> segment_feature(const Mesh& mesh, const FeatureSegmentOptions&
   }
 
   const FaceGraph graph = face_graph(mesh);
-  const double threshold = options.angle_degrees * kPi / 180.0;
+  const double threshold = options.angle_degrees * std::numbers::pi / 180.0;
   std::vector<char> sharp(mesh.n_edges(), 0);
   for (const FaceArc& arc : graph.arcs) {
     if (arc.angle > threshold) {
@@ -158,7 +158,7 @@ std::vector<Mesh> segment_feature(const Mesh& mesh, const FeatureSegmentOptions&
   std::vector<int> labels(mesh.n_faces());
   for (std::size_t f = 0; f < labels.size(); ++f) labels[f] = find(static_cast<int>(f));
   labels = consolidate_regions(graph, labels, options.min_area_fraction * graph.total_area);
-  return parts_of(labelled_surface(mesh, labels));
+  return build_pieces(labelled_surface(mesh, labels));
 }
 
 }  // namespace papercraft

@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <numbers>
 #include <numeric>
 #include <queue>
 #include <set>
@@ -26,7 +27,6 @@
 namespace papercraft {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Faces whose distance sums approximate the centre (the first representative).
 constexpr int kCentreSamples = 32;
@@ -559,7 +559,7 @@ class Hierarchy {
     if (cap < 1) return cap + 1;  // every region makes a strip
     std::vector<int> label(graph_.areas.size(), -1);
     for (int f : faces) label[f] = 0;
-    LabelledSurface surface = labelled_surface(mesh_, label);
+    LabelledSoup surface = labelled_surface(mesh_, label);
     std::size_t kept = 0;
     for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
       if (surface.labels[t] < 0) continue;
@@ -571,7 +571,7 @@ class Hierarchy {
     surface.triangles.resize(kept);
     surface.origin_face.resize(kept);
     surface.labels.resize(kept);
-    return strips_of(parts_of(surface), cap);
+    return strips_of(build_pieces(surface), cap);
   }
 
   int strips_of(const std::vector<Mesh>& parts, int cap) const {
@@ -707,7 +707,7 @@ class Hierarchy {
   // FuzzySegmentOptions), else the parts beside the weakest boundary are merged, until every
   // boundary left is one of these. A smooth convex patch thus ends up whole.
   void merge_weak_boundaries(const std::vector<int>& faces, std::vector<int>& label) const {
-    const double crease = -options_.crease_angle_degrees * kPi / 180.0;
+    const double crease = -options_.crease_angle_degrees * std::numbers::pi / 180.0;
     for (;;) {
       std::map<int, double> area;
       struct Boundary {
@@ -745,7 +745,7 @@ class Hierarchy {
         if (boundary.signed_angle <= crease * boundary.length) continue;
         // The size of the boundary as 2 pi times its mean radius: exact for a circle, and blind
         // to the staircase of mesh edges that a cut follows.
-        const double size = 2 * kPi * boundary.spread / boundary.length;
+        const double size = 2 * std::numbers::pi * boundary.spread / boundary.length;
         const double ratio = size * size / std::min(area[pair.first], area[pair.second]);
         if (ratio > weakest) {
           weakest = ratio;
@@ -879,9 +879,9 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
   const double straighten_width = options.straighten_width * graph.mean_edge_length;
   constexpr int kUnbounded = std::numeric_limits<int>::max() / 2;
   if (options.strip_tolerance <= 0) {
-    LabelledSurface surface = labelled_surface(mesh, hierarchy_labels(options, kUnbounded).first);
+    LabelledSoup surface = labelled_surface(mesh, hierarchy_labels(options, kUnbounded).first);
     if (options.straighten) straighten_boundaries(surface, {straighten_width});
-    return parts_of(surface);
+    return build_pieces(surface);
   }
   // The regions were judged on meshes cut out one at a time and before straightening: judge
   // the parts as they will be emitted, straightened or not, against the model whole and
@@ -889,7 +889,7 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
   // earlier settings, and the straightened parts over the others.
   const Hierarchy judge(mesh, graph, options, estimates);
   std::vector<int> component_labels = component;
-  std::vector<Mesh> best = parts_of(labelled_surface(mesh, component_labels));
+  std::vector<Mesh> best = build_pieces(labelled_surface(mesh, component_labels));
   int best_cost = judge.strips_of(best, kUnbounded);
   std::vector<FuzzySegmentOptions> runs = {options};
   for (const FuzzyAlternative& alternative : options.alternatives)
@@ -898,12 +898,12 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
     // Only a hierarchy that beats the best so far matters (as judged before straightening).
     auto [labels, split] = hierarchy_labels(run, best_cost - 1);
     if (!split) continue;
-    LabelledSurface surface = labelled_surface(mesh, labels);
-    std::vector<Mesh> parts = parts_of(surface);
+    LabelledSoup surface = labelled_surface(mesh, labels);
+    std::vector<Mesh> parts = build_pieces(surface);
     int cost = judge.strips_of(parts, best_cost);
     if (options.straighten) {
       straighten_boundaries(surface, {straighten_width});
-      std::vector<Mesh> straightened = parts_of(surface);
+      std::vector<Mesh> straightened = build_pieces(surface);
       const int straightened_cost = judge.strips_of(straightened, std::min(cost, best_cost));
       if (straightened_cost <= cost) {
         parts = std::move(straightened);

@@ -2,7 +2,7 @@
 
 #include <OpenMesh/Core/Utils/PropertyManager.hh>
 
-#include "nodes/cut/harmonic.h"
+#include "core/labelled_soup.h"
 
 namespace papercraft {
 

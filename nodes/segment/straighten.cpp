@@ -1,77 +1,40 @@
 #include "nodes/segment/straighten.h"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <queue>
 #include <set>
 #include <unordered_map>
 
+#include "core/edge_map.h"
+#include "core/laplacian.h"
+#include "core/union_find.h"
+
 namespace papercraft {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-int key_low(std::uint64_t key) {
-  return static_cast<int>(key >> 32);
-}
-int key_high(std::uint64_t key) {
-  return static_cast<int>(key & 0xffffffffu);
-}
-
-using EdgeTriangles = std::unordered_map<std::uint64_t, std::vector<int>>;
-
-EdgeTriangles edge_triangles(const LabelledSurface& surface) {
-  EdgeTriangles map;
-  map.reserve(3 * surface.triangles.size());
-  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
-    const Triangle& t = surface.triangles[f];
-    for (int k = 0; k < 3; ++k) map[edge_key(t[k], t[(k + 1) % 3])].push_back(static_cast<int>(f));
-  }
-  return map;
-}
-
 // Number of connected components (through edges) of the triangles labelled `label`.
-int label_components(const LabelledSurface& surface, const EdgeTriangles& edges, int label) {
+int label_components(const LabelledSoup& surface, const EdgeTriangles& edges, int label) {
   const std::size_t n = surface.triangles.size();
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  UnionFind components(n);
   for (const auto& [key, triangles] : edges) {
     for (std::size_t i = 1; i < triangles.size(); ++i) {
       if (surface.labels[triangles[0]] != label || surface.labels[triangles[i]] != label) continue;
-      parent[find(triangles[i])] = find(triangles[0]);
+      components.unite(triangles[i], triangles[0]);
     }
   }
   int count = 0;
   for (std::size_t f = 0; f < n; ++f)
-    if (surface.labels[f] == label && find(static_cast<int>(f)) == static_cast<int>(f)) ++count;
+    if (surface.labels[f] == label && components.find(f) == f) ++count;
   return count;
 }
 
-double cotangent(const OpenMesh::Vec3d& u, const OpenMesh::Vec3d& v) {
-  constexpr double kLimit = 1e5;
-  const double cross = OpenMesh::cross(u, v).norm();
-  const double dot = OpenMesh::dot(u, v);
-  if (cross > 0.0) return std::clamp(dot / cross, -kLimit, kLimit);
-  return dot >= 0.0 ? kLimit : -kLimit;
-}
-
-OpenMesh::Vec3d unit_normal(const LabelledSurface& surface, int triangle) {
+OpenMesh::Vec3d unit_normal(const LabelledSoup& surface, int triangle) {
   const Triangle& t = surface.triangles[triangle];
   const OpenMesh::Vec3d n = OpenMesh::cross(surface.points[t[1]] - surface.points[t[0]],
                                             surface.points[t[2]] - surface.points[t[0]]);
@@ -80,14 +43,14 @@ OpenMesh::Vec3d unit_normal(const LabelledSurface& surface, int triangle) {
 }
 
 // Angle between the normals of two triangles, radians.
-double normal_angle(const LabelledSurface& surface, int a, int b) {
+double normal_angle(const LabelledSoup& surface, int a, int b) {
   const double cosine = OpenMesh::dot(unit_normal(surface, a), unit_normal(surface, b));
   return std::acos(std::clamp(cosine, -1.0, 1.0));
 }
 
 // Straightens the boundary between labels a and b; returns false if it was left as it was.
-bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOptions& options) {
-  const EdgeTriangles edges = edge_triangles(surface);
+bool straighten_pair(LabelledSoup& surface, int a, int b, const StraightenOptions& options) {
+  const EdgeTriangles edges = edge_triangles(surface.triangles);
   const std::size_t n_points = surface.points.size();
   auto in_union = [&](int f) { return surface.labels[f] == a || surface.labels[f] == b; };
 
@@ -123,7 +86,7 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
     const Triangle& t = surface.triangles[f];
     for (int k = 0; k < 3; ++k) {
       const int u = t[k], w = t[(k + 1) % 3];
-      const std::uint64_t key = edge_key(u, w);
+      const std::uint64_t key = undirected_edge_key(u, w);
       const std::vector<int>& beside = edges.at(key);
       const int first = in_union(beside[0]) ? beside[0] : beside[1];
       if (first != static_cast<int>(f)) continue;  // each edge once, from its first union triangle
@@ -140,7 +103,7 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
     }
   }
   // A boundary along a crease is where it belongs, and as smooth as the crease.
-  if (boundary_angle >= options.crease_degrees * kPi / 180.0 * boundary_length) return false;
+  if (boundary_angle >= options.crease_degrees * std::numbers::pi / 180.0 * boundary_length) return false;
 
   // Geodesic (edge-path) distance from the a-b boundary.
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
@@ -213,42 +176,23 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
     for (int k = 0; k < 3; ++k) {
       const auto& corner = surface.points[t[k]];
       const int u = t[(k + 1) % 3], w = t[(k + 2) % 3];
-      weight[edge_key(u, w)] +=
-          0.5 * cotangent(surface.points[u] - corner, surface.points[w] - corner);
+      weight[undirected_edge_key(u, w)] +=
+          0.5 * clamped_cotangent(surface.points[u] - corner, surface.points[w] - corner, 1e5);
     }
   }
-  double positive_sum = 0;
-  int positive_count = 0;
+  std::vector<double> raw;
+  raw.reserve(weight.size());
+  for (const auto& [key, w] : weight) raw.push_back(w);
+  const std::vector<double> floored = floored_weights(raw);
+  std::vector<WeightedEdge> weighted;
+  weighted.reserve(weight.size());
   for (const auto& [key, w] : weight) {
-    if (w > 0) {
-      positive_sum += w;
-      ++positive_count;
-    }
+    const auto [lo, hi] = edge_key_vertices(key);
+    weighted.push_back({local[lo], local[hi], floored[weighted.size()]});
   }
-  const double floor = 1e-6 * (positive_count > 0 ? positive_sum / positive_count : 1.0);
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n_free);
-  for (const auto& [key, raw] : weight) {
-    const double w = std::max(raw, floor);
-    const int i = local[key_low(key)], j = local[key_high(key)];
-    const int fi = free_index[i], fj = free_index[j];
-    if (fi >= 0) triplets.emplace_back(fi, fi, w);
-    if (fj >= 0) triplets.emplace_back(fj, fj, w);
-    if (fi >= 0 && fj >= 0) {
-      triplets.emplace_back(fi, fj, -w);
-      triplets.emplace_back(fj, fi, -w);
-    } else if (fi >= 0) {
-      rhs[fi] += w * field[j];
-    } else if (fj >= 0) {
-      rhs[fj] += w * field[i];
-    }
-  }
-  Eigen::SparseMatrix<double> matrix(n_free, n_free);
-  matrix.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(matrix);
-  if (solver.info() != Eigen::Success) return false;
-  const Eigen::VectorXd solution = solver.solve(rhs);
-  if (solver.info() != Eigen::Success || !solution.allFinite()) return false;
+  const auto solved = solve_dirichlet(assemble_dirichlet(weighted, free_index, field));
+  if (!solved) return false;
+  const Eigen::VectorXd& solution = *solved;
   for (int i = 0; i < n; ++i)
     if (free_index[i] >= 0) field[i] = std::clamp(solution[free_index[i]], 0.0, 1.0);
 
@@ -258,12 +202,12 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
   for (int i = 0; i < n; ++i) side[i] = field[i] < kValue ? -1 : (field[i] > kValue ? 1 : 0);
   const double snap = std::max(options.snap_fraction, 1e-12);
   auto parameter = [&](std::uint64_t key) {
-    const int i = local[key_low(key)], j = local[key_high(key)];
+    const int i = local[edge_key_vertices(key).first], j = local[edge_key_vertices(key).second];
     return (kValue - field[i]) / (field[j] - field[i]);
   };
   std::vector<char> snapped(n, 0);
   for (std::uint64_t key : union_edges) {
-    const int i = local[key_low(key)], j = local[key_high(key)];
+    const int i = local[edge_key_vertices(key).first], j = local[edge_key_vertices(key).second];
     if (side[i] * side[j] >= 0) continue;
     const double t = parameter(key);
     if (t <= snap) snapped[i] = 1;
@@ -275,11 +219,11 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
   // The iso-line crosses each crossed edge once, at parameter t from its lower-numbered end.
   std::map<std::uint64_t, double> crossing;
   for (std::uint64_t key : union_edges) {
-    const int lo = key_low(key), hi = key_high(key);
+    const int lo = edge_key_vertices(key).first, hi = edge_key_vertices(key).second;
     if (side[local[lo]] * side[local[hi]] < 0) crossing.emplace(key, parameter(key));
   }
 
-  LabelledSurface refined;
+  LabelledSoup refined;
   refined.points = surface.points;
   refined.texcoords = surface.texcoords;
   refined.input_vertex = surface.input_vertex;
@@ -287,7 +231,7 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
   for (std::uint64_t key : union_edges) {
     auto it = crossing.find(key);
     if (it == crossing.end()) continue;
-    const int lo = key_low(key), hi = key_high(key);
+    const int lo = edge_key_vertices(key).first, hi = edge_key_vertices(key).second;
     const double t = it->second;
     crossing_point.emplace(key, static_cast<int>(refined.points.size()));
     refined.points.push_back((1.0 - t) * surface.points[lo] + t * surface.points[hi]);
@@ -313,7 +257,7 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
     int corner_side[3], crossing[3];  // crossing[k]: new point on the edge opposite corner k
     for (int k = 0; k < 3; ++k) {
       corner_side[k] = side[local[t[k]]];
-      auto it = crossing_point.find(edge_key(t[(k + 1) % 3], t[(k + 2) % 3]));
+      auto it = crossing_point.find(undirected_edge_key(t[(k + 1) % 3], t[(k + 2) % 3]));
       crossing[k] = it == crossing_point.end() ? -1 : it->second;
     }
     const int n_crossings = (crossing[0] >= 0) + (crossing[1] >= 0) + (crossing[2] >= 0);
@@ -350,7 +294,7 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
     }
   }
 
-  const EdgeTriangles refined_edges = edge_triangles(refined);
+  const EdgeTriangles refined_edges = edge_triangles(refined.triangles);
   const int after_a = label_components(refined, refined_edges, a);
   const int after_b = label_components(refined, refined_edges, b);
   if (after_a == 0 || after_b == 0 || after_a > label_components(surface, edges, a) ||
@@ -363,10 +307,10 @@ bool straighten_pair(LabelledSurface& surface, int a, int b, const StraightenOpt
 
 }  // namespace
 
-void straighten_boundaries(LabelledSurface& surface, const StraightenOptions& options) {
+void straighten_boundaries(LabelledSoup& surface, const StraightenOptions& options) {
   if (!(options.band_width > 0)) return;
   std::set<std::pair<int, int>> pairs;
-  for (const auto& [key, triangles] : edge_triangles(surface)) {
+  for (const auto& [key, triangles] : edge_triangles(surface.triangles)) {
     if (triangles.size() != 2) continue;
     const int a = surface.labels[triangles[0]], b = surface.labels[triangles[1]];
     if (a != b) pairs.emplace(std::min(a, b), std::max(a, b));

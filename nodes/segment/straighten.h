@@ -29,6 +29,6 @@ struct StraightenOptions {
 /// interpolated; new points get input_vertex -1. A pair whose boundary follows a crease (see
 /// crease_degrees), whose re-assignment would disconnect a part or empty it, or whose field
 /// cannot be solved keeps its boundary.
-void straighten_boundaries(LabelledSurface& surface, const StraightenOptions& options);
+void straighten_boundaries(LabelledSoup& surface, const StraightenOptions& options);
 
 }  // namespace papercraft

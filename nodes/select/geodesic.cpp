@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/errors.h"
+#include "core/graph_distance.h"
 
 namespace papercraft {
 namespace {
@@ -26,15 +27,6 @@ void check_part(const Mesh& part) {
   if (part.n_faces() == 0) throw InvalidInputException("boundary selection: the part has no face");
 }
 
-// The vertex of largest finite distance (lowest index on ties), or -1 if none is finite.
-int farthest_vertex(const std::vector<double>& distances) {
-  int best = -1;
-  for (int v = 0; v < static_cast<int>(distances.size()); ++v) {
-    if (std::isfinite(distances[v]) && (best < 0 || distances[v] > distances[best])) best = v;
-  }
-  return best;
-}
-
 double distance_to(const std::vector<double>& distances, const std::vector<int>& vertices) {
   double nearest = kInfinity;
   for (int v : vertices) nearest = std::min(nearest, distances[v]);
@@ -46,22 +38,8 @@ BoundarySelection selection_of(const BoundaryCandidate& first, const BoundaryCan
 }
 
 BoundarySelection closed_part_selection(const Mesh& part, int sweeps) {
-  int current = 0;
-  int best_from = 0;
-  int best_to = 0;
-  double best_distance = -1.0;
-  for (int sweep = 0; sweep < sweeps; ++sweep) {
-    const auto distances = edge_graph_distances(part, {current});
-    const int far = farthest_vertex(distances);
-    if (distances[far] > best_distance) {
-      best_distance = distances[far];
-      best_from = current;
-      best_to = far;
-    }
-    if (far == current) break;
-    current = far;
-  }
-  return {{best_from}, {best_to}, false, false};
+  const auto [from, to] = farthest_vertex_pair(part, sweeps);
+  return {{from}, {to}, false, false};
 }
 
 BoundarySelection one_loop_selection(const Mesh& part, const std::vector<int>& loop) {
@@ -91,40 +69,6 @@ std::vector<BoundaryCandidate> boundary_candidates(const Mesh& part,
 }
 
 }  // namespace
-
-std::vector<double> edge_graph_distances(const Mesh& mesh, const std::vector<int>& sources) {
-  if (sources.empty()) throw InvalidInputException("edge_graph_distances: no source vertex");
-  const int count = static_cast<int>(mesh.n_vertices());
-  std::vector<double> distances(count, kInfinity);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for (int source : sources) {
-    if (source < 0 || source >= count) {
-      throw InvalidInputException("edge_graph_distances: source vertex " + std::to_string(source) +
-                                  " is not in the mesh (" + std::to_string(count) + " vertices)");
-    }
-    if (distances[source] > 0.0) {
-      distances[source] = 0.0;
-      queue.emplace(0.0, source);
-    }
-  }
-  while (!queue.empty()) {
-    const auto [distance, v] = queue.top();
-    queue.pop();
-    if (distance > distances[v]) continue;
-    const auto vertex = mesh.vertex_handle(v);
-    const auto& point = mesh.point(vertex);
-    for (auto halfedge : mesh.voh_range(vertex)) {
-      const auto neighbour = halfedge.to();
-      const double through = distance + (mesh.point(neighbour) - point).norm();
-      if (through < distances[neighbour.idx()]) {
-        distances[neighbour.idx()] = through;
-        queue.emplace(through, neighbour.idx());
-      }
-    }
-  }
-  return distances;
-}
 
 BoundarySelection select_geodesic(const Mesh& part, const GeodesicSelectOptions& options) {
   check_part(part);

@@ -11,6 +11,7 @@
 
 #include <vector>
 
+#include "core/graph_distance.h"
 #include "core/mesh.h"
 #include "core/strip.h"
 
@@ -32,12 +33,6 @@ struct GeodesicSelectOptions {
   /// vertex; the farthest pair seen is kept. The first sweep starts at vertex 0.
   int sweeps = 4;
 };
-
-/// Shortest-path distances along mesh edges (Euclidean edge lengths) from the nearest of
-/// `sources` to every vertex; +infinity for vertices not connected to any source.
-/// \pre mesh has no deleted elements. \throws InvalidInputException if `sources` is empty or
-/// holds an index out of range.
-std::vector<double> edge_graph_distances(const Mesh& mesh, const std::vector<int>& sources);
 
 /// The selection of the paper's geodesic scheme (see the file comment). Ties go to the
 /// first candidate (loops in boundary_loops order, then vertices by loop) and to the lowest

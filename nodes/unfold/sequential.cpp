@@ -9,8 +9,8 @@
 #include <utility>
 
 #include "core/errors.h"
-#include "nodes/unfold/flat_boundary.h"
-#include "nodes/unfold/overlap.h"
+#include "core/flat_boundary.h"
+#include "core/overlap_2d.h"
 
 namespace papercraft {
 namespace {

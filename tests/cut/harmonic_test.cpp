@@ -1,3 +1,4 @@
+#include "core/labelled_soup.h"
 #include "nodes/cut/harmonic.h"
 
 #include <gtest/gtest.h>

@@ -63,7 +63,7 @@ TEST(MaximalStrip, NothingFoundOnAPartThatNoStripFits) {
   SphereOptions options;
   options.subdivisions = 3;
   Mesh sphere_mesh = to_mesh(sphere(options));
-  const auto [from, to] = farthest_vertex_pair(sphere_mesh);
+  const auto [from, to] = farthest_vertex_pair(sphere_mesh, 4);
   const WitnessCut cut = cut_maximal_strip(sphere_mesh, {from}, false, {to}, false, 1e-6);
   EXPECT_TRUE(cut.pieces.empty());
 }

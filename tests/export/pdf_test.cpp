@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "nodes/layout/pages.h"
 #include "support/layout_strips.h"
 
 namespace papercraft {

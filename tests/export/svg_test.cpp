@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "nodes/layout/pages.h"
 #include "support/layout_strips.h"
 
 namespace papercraft {

@@ -1,11 +1,11 @@
-#include "nodes/unfold/seams.h"
+#include "core/seams.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 
 #include "core/errors.h"
-#include "nodes/unfold/flat_boundary.h"
+#include "core/flat_boundary.h"
 #include "nodes/unfold/sequential.h"
 #include "support/unfold_checks.h"
 

@@ -1,4 +1,4 @@
-#include "nodes/unfold/overlap.h"
+#include "core/overlap_2d.h"
 
 #include <algorithm>
 #include <cmath>

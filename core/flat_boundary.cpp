@@ -1,4 +1,4 @@
-#include "nodes/unfold/flat_boundary.h"
+#include "core/flat_boundary.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "nodes/unfold/seams.h"
+#include "core/seams.h"
 
 #include <algorithm>
 #include <cmath>

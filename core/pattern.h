@@ -1,0 +1,131 @@
+#pragma once
+// The printed pattern as pure geometry in page millimetres: what `layout` produces and
+// `export` draws (SVG, PDF). See nodes/layout/pages.h for how a layout is made and the
+// conventions (page coordinates, printed side, folds, tabs).
+
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/strip.h"
+
+namespace papercraft {
+
+/// A sheet of paper in millimetres.
+struct PageSize {
+  double width_mm = 210.0;
+  double height_mm = 297.0;
+};
+
+/// Text to draw: centred on `position` (page mm), `angle_degrees` clockwise on the page
+/// from left-to-right (the SVG rotate() sense), always in (-90, 90] so it reads upright.
+struct Label {
+  std::string text;
+  Vec2 position = Vec2::Zero();
+  double angle_degrees = 0.0;
+  double size_mm = 2.5;
+};
+
+enum class FoldKind { Mountain, Valley };
+
+struct FoldLine {
+  Vec2 a = Vec2::Zero();
+  Vec2 b = Vec2::Zero();
+  FoldKind kind = FoldKind::Mountain;
+  double bend_degrees = 0.0;  // 0 = flat, 90 = a cube edge
+  bool gentle = false;        // bend_degrees < strong_fold_angle_degrees: curve, do not crease
+};
+
+/// A piece of texture: the affine map taking `uvs` (texture coordinates in [0, 1], v up)
+/// to `corners` (page mm), painted inside the convex polygon `clip` (page mm).
+struct TexturePatch {
+  std::array<Vec2, 3> corners;
+  std::array<Vec2, 3> uvs;
+  std::vector<Vec2> clip;
+};
+
+/// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per
+/// nearly straight run of edges). Each flap polygon is counter-clockwise on the page as a
+/// reader sees it: its base polyline (on the seam) in reverse, then its outer chain; `bases`
+/// are the base polylines, the tab's fold lines (mountain).
+struct Tab {
+  std::string label;
+  std::vector<std::vector<Vec2>> flaps;
+  std::vector<std::vector<Vec2>> bases;
+  /// Where the strips have uvs: per flap and base edge, the texture continuing across the
+  /// seam (the partner triangle unfolded onto the tab), clipped to the flap.
+  std::vector<TexturePatch> texture;
+};
+
+/// A boundary edge of a placed piece in page mm, the piece on its left as a reader sees it.
+struct PlacedEdge {
+  Vec2 a = Vec2::Zero();
+  Vec2 b = Vec2::Zero();
+  EdgeKind kind = EdgeKind::Cut;
+  std::string label;     // printed seam label ("" unless kind == Seam)
+  bool has_tab = false;  // a flap of this piece's tab is glued along this edge
+};
+
+/// Maps a strip's vertices2d (model units) to page mm: page = linear * v + translation.
+/// linear = diag(1, -1) * rotation * mm_per_unit (the y flip of page coordinates).
+struct PageTransform {
+  Eigen::Matrix2d linear = Eigen::Matrix2d::Identity();
+  Vec2 translation = Vec2::Zero();
+  double rotation_degrees = 0.0;  // counter-clockwise, in the strip's y-up frame
+
+  Vec2 apply(const Vec2& v) const { return linear * v + translation; }
+};
+
+/// One piece of paper on a page: a whole flat strip or, where the strip was split to fit
+/// a page, a part of it.
+struct PlacedPiece {
+  int strip_id = -1;
+  int piece_index = 0;  // 0..piece_count-1 along the strip
+  int piece_count = 1;
+  PageTransform transform;
+  /// The piece's own vertex arrays: page mm, the strip vertex each came from, uvs (empty
+  /// if the strip has none) and triangles indexing `vertices`.
+  std::vector<Vec2> vertices;
+  std::vector<int> strip_vertex;
+  std::vector<Vec2> uvs;
+  std::vector<Triangle> triangles;
+  /// Boundary loops of the piece without tabs (outer loop first).
+  std::vector<std::vector<Vec2>> outline;
+  /// What to cut: one closed path per boundary loop around the piece and its tabs.
+  std::vector<std::vector<Vec2>> cut_outline;
+  std::vector<PlacedEdge> edges;
+  std::vector<FoldLine> folds;  // inner edges only; tab bases are in `tabs`
+  std::vector<Tab> tabs;
+  std::vector<Label> labels;  // one per seam side on this piece
+  Label number;               // "12", or "12.3" for the third piece of split strip 12
+};
+
+/// A bar of a round length with ticks, and its caption, in page mm.
+struct ScaleBar {
+  Vec2 start = Vec2::Zero();  // left end of the bar (on its baseline)
+  double length_mm = 50.0;
+  double tick_spacing_mm = 10.0;
+  double tick_height_mm = 2.0;
+  Label caption;
+};
+
+struct Page {
+  std::vector<PlacedPiece> pieces;
+  ScaleBar scale_bar;
+  Label footer;  // "page 2 / 5"
+};
+
+struct PatternLayout {
+  PageSize page;
+  double margin_mm = 10.0;
+  double mm_per_unit = 1.0;
+  std::vector<Page> pages;
+  /// Pages the plain shelf packing needs for the same pieces (for the report).
+  int shelf_page_count = 0;
+  /// Strips that did not fit a page and were split, pieces that still do not fit
+  /// (they overflow their page), seams without a partner or without room for a tab.
+  std::vector<std::string> warnings;
+};
+
+}  // namespace papercraft
