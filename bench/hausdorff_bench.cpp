@@ -43,8 +43,8 @@
 #include "graph/pipeline.h"
 #include "graph/registry.h"
 #include "nodes/hausdorff/bounded.h"
-#include "nodes/hausdorff/emit_verdict.h"
 #include "nodes/hausdorff/sampled.h"
+#include "nodes/hausdorff/verdict_node.h"
 
 #ifdef PAPERCRAFT_HAVE_CGAL
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -292,31 +292,28 @@ Recorder& recorder() {
   return instance;
 }
 
-/// hausdorff.bounded's decision with its parameters, plus a copy of every pair it decides.
+/// hausdorff.bounded itself (same spec, parameters and body), plus a copy of every pair on
+/// which it runs the Hausdorff decision (no holes left to split off, a strip with area).
 void register_recording_node(Registry& registry) {
-  const NodeSpec& bounded = *builtin_registry().find("hausdorff.bounded");
-  registry.add({"hausdorff.recording",
-                "hausdorff.bounded that keeps every (part, strip) pair (benchmark only)",
-                bounded.input,
-                bounded.gathers,
-                bounded.outputs,
-                bounded.params,
-                [](const Params& params) {
-                  BoundedHausdorffOptions options;
-                  options.precision = params.number("precision");
-                  options.max_evaluations =
-                      static_cast<std::size_t>(params.integer("max_evaluations"));
-                  return make_body([options](const Envelope& in, Emitter& out) {
-                    decide_and_emit(in, out, [&](const TriangleMesh& a, const TriangleMesh& b,
-                                                 double tau) {
-                      {
-                        std::lock_guard lock(recorder().mutex);
-                        recorder().pairs.push_back({a, b});
-                      }
-                      return certified_hausdorff_within(a, b, tau, options);
-                    });
-                  });
-                }});
+  NodeSpec spec = *builtin_registry().find("hausdorff.bounded");
+  spec.name = "hausdorff.recording";
+  spec.summary = "hausdorff.bounded that keeps every (part, strip) pair (benchmark only)";
+  auto create_bounded = spec.create;
+  spec.create = [create_bounded](const Params& params, const NodeContext& context) {
+    std::shared_ptr<NodeBody> bounded = create_bounded(params, context);
+    return make_body([bounded](const Envelope& in, Emitter& out) {
+      const StripCandidate& candidate = in.get<StripCandidate>();
+      if (candidate.candidate->holes.empty() && !candidate.strip->mesh.empty()) {
+        TriangleMesh part = to_triangle_mesh(*candidate.candidate->part.mesh);
+        if (surface_area(candidate.strip->mesh) > kDegenerateStripArea * surface_area(part)) {
+          std::lock_guard lock(recorder().mutex);
+          recorder().pairs.push_back({std::move(part), candidate.strip->mesh});
+        }
+      }
+      bounded->process(in, out);
+    });
+  };
+  registry.add(std::move(spec));
 }
 
 std::vector<RecordedPair> record_pairs(const std::filesystem::path& mesh,

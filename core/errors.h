@@ -43,4 +43,12 @@ class ConfigException : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
+/// A broken invariant of papercraft itself (a node emitting on a port it did not declare, a
+/// parameter read that was never declared): a bug, never the input's fault. The runner exits
+/// with code 3 ("internal error") when one occurs.
+class InternalError : public std::logic_error {
+ public:
+  using std::logic_error::logic_error;
+};
+
 }  // namespace papercraft

@@ -9,21 +9,10 @@
 #include "core/mesh.h"
 #include "core/pattern.h"
 #include "core/strip.h"
+#include "graph/model_record.h"
+#include "nodes/refine/refine.h"
 
 namespace papercraft {
-
-/// Facts about the input mesh, for report.json.
-struct MeshSummary {
-  std::size_t vertices = 0;
-  std::size_t faces = 0;
-  Vec3 box_min = Vec3::Zero();
-  Vec3 box_max = Vec3::Zero();
-  double largest_side = 0.0;
-  int boundary_loops = 0;
-  int components = 0;
-  int euler_characteristic = 0;
-  bool has_uvs = false;
-};
 
 /// A loaded, validated input mesh.
 struct Model {
@@ -43,18 +32,10 @@ struct Part {
   std::shared_ptr<const Model> model;
 };
 
-/// A part with the two strip boundaries chosen (a loop or a single vertex each) and the
-/// part's remaining boundary loops (holes).
-struct Candidate {
+/// A part with the two strip boundaries chosen and the part's remaining boundary loops.
+struct Candidate : StripBoundaries {
   static constexpr const char* kMessageName = "Candidate";
   Part part;
-  std::vector<int> first;
-  std::vector<int> second;
-  bool first_closed = false;
-  bool second_closed = false;
-  Polyline a;
-  Polyline b;
-  std::vector<std::vector<int>> holes;
 };
 
 /// A candidate with its triangulated ruled surface.
@@ -74,16 +55,12 @@ struct AcceptedStrip {
 };
 
 /// A strip that failed: the part must be cut through the witness (the located maximum
-/// error) or, when `hole` >= 0, through that hole (paper 3.2.2: holes are always split).
+/// error) or, when verdict.hole >= 0, through that hole (paper 3.2.2: holes are always split).
 struct RejectedStrip {
   static constexpr const char* kMessageName = "RejectedStrip";
   std::shared_ptr<const Candidate> candidate;
   std::shared_ptr<const RuledStrip> strip;
-  Vec3 witness = Vec3::Zero();
-  double witness_error = 0.0;
-  int witness_side = 0;       // 0: on the part, 1: on the strip
-  int witness_triangle = -1;  // triangle of that surface (-1: unknown)
-  int hole = -1;              // index into candidate->holes
+  StripVerdict verdict;
 };
 
 /// The flat strips unfolded from one accepted 3D strip.

@@ -1,7 +1,5 @@
 #include "graph/model_run.h"
 
-#include <algorithm>
-
 namespace papercraft {
 
 ModelRun::ModelRun(int index_in, std::filesystem::path input, std::string name_in,
@@ -12,11 +10,26 @@ ModelRun::ModelRun(int index_in, std::filesystem::path input, std::string name_i
       settings(std::move(settings_in)),
       node_stats(node_count) {}
 
-void ModelRun::fail(const std::string& node, const std::string& message) {
+void ModelRun::set_input(const MeshSummary& input) {
+  const double tolerance = settings->tolerance.absolute(input.largest_side);
+  std::lock_guard lock(mutex_);
+  record_.loaded = true;
+  record_.input = input;
+  record_.tolerance = tolerance;
+  tolerance_.store(tolerance);
+}
+
+void ModelRun::fail(const std::string& node, const std::string& message, bool internal) {
   std::lock_guard lock(mutex_);
   if (failed_.load()) return;
   error_ = node.empty() ? message : node + ": " + message;
+  internal_ = internal;
   failed_.store(true);
+}
+
+bool ModelRun::internal_error() const {
+  std::lock_guard lock(mutex_);
+  return internal_;
 }
 
 std::string ModelRun::error() const {
@@ -24,35 +37,18 @@ std::string ModelRun::error() const {
   return error_;
 }
 
-void ModelRun::set_result(const std::string& key, double value) {
+void ModelRun::update(const std::function<void(ModelRecord&)>& change) {
   std::lock_guard lock(mutex_);
-  results_[key] = value;
+  change(record_);
 }
 
-void ModelRun::add_result(const std::string& key, double value) {
+ModelRecord ModelRun::record() const {
   std::lock_guard lock(mutex_);
-  results_[key] += value;
-}
-
-void ModelRun::max_result(const std::string& key, double value) {
-  std::lock_guard lock(mutex_);
-  auto [it, inserted] = results_.emplace(key, value);
-  if (!inserted) it->second = std::max(it->second, value);
-}
-
-std::map<std::string, double> ModelRun::results() const {
-  std::lock_guard lock(mutex_);
-  return results_;
+  return record_;
 }
 
 void ModelRun::note(const std::string& text) {
-  std::lock_guard lock(mutex_);
-  notes_.push_back(text);
-}
-
-std::vector<std::string> ModelRun::notes() const {
-  std::lock_guard lock(mutex_);
-  return notes_;
+  update([&](ModelRecord& record) { record.notes.push_back(text); });
 }
 
 }  // namespace papercraft

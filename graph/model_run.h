@@ -1,18 +1,20 @@
 #pragma once
 // Per-model state shared by every message of one model while it flows through the graph:
 // identity, settings, the count of messages in flight (model completion), gathered
-// messages, per-node statistics, the error record and values for report.json.
+// messages, per-node statistics, the error and the typed record of what the model produced.
 
 #include <any>
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
+#include "graph/model_record.h"
 #include "graph/tolerance.h"
 
 namespace papercraft {
@@ -45,30 +47,31 @@ struct ModelRun {
 
   std::filesystem::path output_dir() const { return settings->output_dir / name; }
 
-  /// Absolute tolerance, set by the load node once the bounding box is known.
-  std::atomic<double> tolerance{0.0};
-  std::atomic<double> largest_side{0.0};
+  /// The absolute tolerance (model units), fixed by the framework when the loader emits the
+  /// model (set_input); 0 before.
+  double tolerance() const { return tolerance_.load(); }
 
   /// Messages of this model currently in flight (framework-managed).
   std::atomic<long> in_flight{0};
 
-  std::atomic<int> next_part_id{0};
-  std::atomic<int> next_strip_id{0};
+  /// Records the loaded input and fixes the absolute tolerance from the run's tolerance and
+  /// the input's largest side. Framework-only: called once, when the entry node emits Model.
+  void set_input(const MeshSummary& input);
 
-  /// Record the first error; later messages of this model are dropped.
-  void fail(const std::string& node, const std::string& message);
+  /// Record the first error; later messages of this model are dropped. `internal` marks a
+  /// broken invariant of papercraft itself (a bug) rather than a problem of the input.
+  void fail(const std::string& node, const std::string& message, bool internal = false);
   bool failed() const { return failed_.load(); }
+  bool internal_error() const;
   std::string error() const;
 
-  /// Values for report.json's "result" section, set by nodes ("strips_3d", ...).
-  void set_result(const std::string& key, double value);
-  void add_result(const std::string& key, double value);
-  void max_result(const std::string& key, double value);
-  std::map<std::string, double> results() const;
+  /// Changes the record under the model's lock (nodes of one model run concurrently).
+  void update(const std::function<void(ModelRecord&)>& change);
+  /// A copy of the record as it stands.
+  ModelRecord record() const;
 
-  /// Lines for the report's "notes" (repairs made by the loader, warnings).
+  /// A line for the report's notes (repairs made by the loader, warnings).
   void note(const std::string& text);
-  std::vector<std::string> notes() const;
 
   std::vector<NodeStatistics> node_stats;  // index: node index in the pipeline
   /// Configured node names and implementations, same indexing (set by the pipeline).
@@ -85,10 +88,11 @@ struct ModelRun {
 
  private:
   mutable std::mutex mutex_;
+  std::atomic<double> tolerance_{0.0};
   std::atomic<bool> failed_{false};
+  bool internal_ = false;
   std::string error_;
-  std::map<std::string, double> results_;
-  std::vector<std::string> notes_;
+  ModelRecord record_;
 };
 
 }  // namespace papercraft

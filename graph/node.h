@@ -11,10 +11,12 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <typeindex>
 #include <vector>
 
 #include "graph/params.h"
+#include "nodes/refine/refine.h"
 
 namespace papercraft {
 
@@ -61,21 +63,23 @@ struct Gathered {
   }
 };
 
-/// Sends payloads to a node's output ports; installed by the framework for each call.
+/// Sends payloads to a node's output ports, named as the node's spec declares them ("out",
+/// "accept", ...); installed by the framework for each call. Emitting on a port the spec does
+/// not declare, or a payload of another type, is a framework bug (InternalError).
 class Emitter {
  public:
   virtual ~Emitter() = default;
   template <class T>
-  void emit(int port, std::shared_ptr<const T> payload) {
+  void emit(std::string_view port, std::shared_ptr<const T> payload) {
     emit_any(port, typeid(T), std::any(std::move(payload)));
   }
   template <class T>
-  void emit(int port, T&& value) {
+  void emit(std::string_view port, T&& value) {
     emit<std::decay_t<T>>(port, std::make_shared<const std::decay_t<T>>(std::forward<T>(value)));
   }
 
  protected:
-  virtual void emit_any(int port, std::type_index type, std::any payload) = 0;
+  virtual void emit_any(std::string_view port, std::type_index type, std::any payload) = 0;
 };
 
 /// The processing of one node instance. `process` may be called concurrently (up to the
@@ -91,15 +95,32 @@ struct OutputPort {
   MessageType type;
 };
 
-/// A registered implementation: its contract, parameters and factory.
+/// What a node may know of the pipeline it is built into, besides its own parameters.
+struct NodeContext {
+  /// The refinement as this pipeline configures it: every node that contributes to it
+  /// (NodeSpec::refinement: the select, ruled, hausdorff and cut stages) has written its
+  /// parameters in, defaults stand for the stages the config lacks. Nodes that run the
+  /// refinement themselves (segment estimates) use it, so they refine as the graph does.
+  RefineOptions refine;
+};
+
+/// A registered implementation: its contract, parameters and factory. Written with
+/// designated initialisers:
+///   registry.add({.name = "unfold.sequential", .summary = "...",
+///                 .input = MessageType::of<AcceptedStrip>(),
+///                 .outputs = {{"out", MessageType::of<UnfoldedStrip>()}},
+///                 .params = table.specs(), .create = ...});
 struct NodeSpec {
   std::string name;     // dotted: "hausdorff.bounded"
   std::string summary;  // one line for `papercraft nodes`
   MessageType input;
   bool gathers = false;  // input receives all messages of a model at once (Gathered)
-  std::vector<OutputPort> outputs;
-  std::vector<ParamSpec> params;
-  std::function<std::unique_ptr<NodeBody>(const Params&)> create;
+  std::vector<OutputPort> outputs = {};
+  std::vector<ParamSpec> params = {};
+  /// For a stage of the refinement: writes this node's parameters into the engine's options
+  /// (applied in config order to build NodeContext::refine).
+  std::function<void(const Params&, RefineOptions&)> refinement = {};
+  std::function<std::unique_ptr<NodeBody>(const Params&, const NodeContext&)> create;
 
   std::string stage() const { return name.substr(0, name.find('.')); }
 };
@@ -113,6 +134,22 @@ std::unique_ptr<NodeBody> make_body(Fn fn) {
     Fn fn_;
   };
   return std::make_unique<LambdaBody>(std::move(fn));
+}
+
+/// Completes the spec of a stage of the refinement loop (select, ruled, hausdorff, cut):
+/// `configure` writes the node's parameters into the engine's options (NodeSpec::refinement),
+/// and `body` makes the node's processing from the pipeline's options with them applied, so
+/// the node runs the very step the engine runs for the segmentation's estimates.
+inline NodeSpec refinement_stage(
+    NodeSpec spec, std::function<void(const Params&, RefineOptions&)> configure,
+    std::function<std::unique_ptr<NodeBody>(const RefineOptions&)> body) {
+  spec.refinement = configure;
+  spec.create = [configure, body](const Params& params, const NodeContext& context) {
+    RefineOptions refine = context.refine;
+    configure(params, refine);
+    return body(refine);
+  };
+  return spec;
 }
 
 }  // namespace papercraft

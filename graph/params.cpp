@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 namespace papercraft {
@@ -65,7 +67,50 @@ void check_choice(const ParamSpec& spec, const std::string& value) {
   throw std::invalid_argument("expected one of " + list + ", got '" + value + "'");
 }
 
+void check_range(const ParamSpec& spec, double value, const std::string& text) {
+  if (spec.range.contains(value)) return;
+  throw std::invalid_argument("must be " + spec.range.describe() + ", got " + text);
+}
+
 }  // namespace
+
+std::string format_number(double value) {
+  char buffer[40];
+  for (int digits : {15, 17}) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
+  return buffer;
+}
+
+bool ParamRange::contains(double value) const {
+  if (minimum && (minimum_exclusive ? !(value > *minimum) : !(value >= *minimum))) return false;
+  if (maximum && (maximum_exclusive ? !(value < *maximum) : !(value <= *maximum))) return false;
+  return true;
+}
+
+std::string ParamRange::describe() const {
+  const std::string low = minimum ? format_number(*minimum) : "";
+  const std::string high = maximum ? format_number(*maximum) : "";
+  if (minimum && maximum) {
+    if (!minimum_exclusive && !maximum_exclusive) return "between " + low + " and " + high;
+    return std::string(minimum_exclusive ? "greater than " : "at least ") + low + " and " +
+           (maximum_exclusive ? "less than " : "at most ") + high;
+  }
+  if (minimum) return (minimum_exclusive ? "greater than " : "at least ") + low;
+  if (maximum) return (maximum_exclusive ? "less than " : "at most ") + high;
+  return "";
+}
+
+ParamRange between(double minimum, double maximum) {
+  return {minimum, maximum, false, false};
+}
+ParamRange at_least(double minimum) {
+  return {minimum, std::nullopt, false, false};
+}
+ParamRange greater_than(double minimum) {
+  return {minimum, std::nullopt, true, false};
+}
 
 std::size_t parse_number_prefix(const std::string& text, double& value) {
   std::size_t used = 0;
@@ -77,7 +122,9 @@ std::size_t parse_number_prefix(const std::string& text, double& value) {
   return used;
 }
 
-ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
+namespace {
+
+ParamValue parse_unchecked(const ParamSpec& spec, const std::string& raw) {
   const std::string text = trim(raw);
   switch (spec.type) {
     case ParamType::Number: {
@@ -86,6 +133,7 @@ ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
       if (used == 0 || used != text.size() || !std::isfinite(value)) {
         throw std::invalid_argument("expected a number, got '" + text + "'");
       }
+      check_range(spec, value, text);
       return value;
     }
     case ParamType::Integer: {
@@ -99,6 +147,7 @@ ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
       if (used == 0 || used != text.size()) {
         throw std::invalid_argument("expected an integer, got '" + text + "'");
       }
+      check_range(spec, static_cast<double>(value), text);
       return value;
     }
     case ParamType::Boolean:
@@ -133,14 +182,17 @@ ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
   throw std::logic_error("unknown parameter type");
 }
 
+}  // namespace
+
+ParamValue parse_param_value(const ParamSpec& spec, const std::string& raw) {
+  ParamValue value = parse_unchecked(spec, raw);
+  if (spec.check) spec.check(value);
+  return value;
+}
+
 std::string format_param_value(const ParamValue& value) {
   struct Visitor {
-    std::string operator()(double v) const {
-      std::string s = std::to_string(v);
-      s.erase(s.find_last_not_of('0') + 1);
-      if (!s.empty() && s.back() == '.') s.pop_back();
-      return s;
-    }
+    std::string operator()(double v) const { return format_number(v); }
     std::string operator()(long v) const { return std::to_string(v); }
     std::string operator()(bool v) const { return v ? "true" : "false"; }
     std::string operator()(const std::string& v) const { return v; }

@@ -8,9 +8,11 @@
 
 #include <condition_variable>
 #include <set>
+#include <typeinfo>
 #include <thread>
 
 #include "core/errors.h"
+#include "graph/messages.h"
 
 namespace papercraft {
 
@@ -18,10 +20,19 @@ namespace flow = tbb::flow;
 
 namespace {
 
-constexpr int kMaxPorts = 2;
-using NodeOutputs = std::tuple<Envelope, Envelope>;
-using FlowNode = flow::multifunction_node<Envelope, NodeOutputs>;
+// A node body; its output ports are broadcast nodes (any number), edges leave from them.
+using FlowNode = flow::function_node<Envelope>;
+using PortNode = flow::broadcast_node<Envelope>;
 using GatherNode = flow::multifunction_node<Envelope, std::tuple<Envelope>>;
+
+RefineOptions refine_options_of(const PipelineConfig& config, const Registry& registry) {
+  RefineOptions options;
+  for (const auto& node : config.nodes) {
+    const NodeSpec* spec = registry.find(node.impl);
+    if (spec && spec->refinement) spec->refinement(node.params, options);
+  }
+  return options;
+}
 
 }  // namespace
 
@@ -41,6 +52,10 @@ Pipeline::Pipeline(PipelineConfig config, const Registry& registry)
     : config_(std::move(config)), registry_(registry) {}
 
 Pipeline::~Pipeline() = default;
+
+RefineOptions Pipeline::refine_options() const {
+  return refine_options_of(config_, registry_);
+}
 
 std::vector<std::string> Pipeline::node_names() const {
   std::vector<std::string> names;
@@ -74,10 +89,16 @@ class Execution {
     const std::size_t n = config.nodes.size();
     specs_.resize(n);
     gather_of_node_.assign(n, -1);
+    successors_.resize(n);
+    NodeContext context;
+    context.refine = refine_options_of(config, registry);
     for (std::size_t i = 0; i < n; ++i) {
       specs_[i] = registry.find(config.nodes[i].impl);
-      bodies_.push_back(std::shared_ptr<NodeBody>(specs_[i]->create(config.nodes[i].params)));
+      bodies_.push_back(
+          std::shared_ptr<NodeBody>(specs_[i]->create(config.nodes[i].params, context)));
+      successors_[i].assign(specs_[i]->outputs.size(), 0);
     }
+    for (const auto& e : config.edges) successors_[e.from][e.port]++;
   }
 
   std::vector<ModelResult> run() {
@@ -95,6 +116,7 @@ class Execution {
       graph.wait_for_all();
       // Nodes refer to their graph: destroy them while it is alive.
       gathers_.clear();
+      ports_.clear();
       nodes_.clear();
     });
     {
@@ -113,10 +135,14 @@ class Execution {
       const int concurrency = config_.nodes[i].concurrency;
       const std::size_t limit =
           concurrency == 0 ? std::size_t{flow::unlimited} : static_cast<std::size_t>(concurrency);
-      nodes_.push_back(std::make_unique<FlowNode>(
-          graph, limit, [this, i](const Envelope& in, FlowNode::output_ports_type& ports) {
-            run_node(static_cast<int>(i), in, ports);
-          }));
+      nodes_.push_back(std::make_unique<FlowNode>(graph, limit, [this, i](const Envelope& in) {
+        run_node(static_cast<int>(i), in);
+        return flow::continue_msg();
+      }));
+      ports_.emplace_back();
+      for (std::size_t p = 0; p < specs_[i]->outputs.size(); ++p) {
+        ports_.back().push_back(std::make_unique<PortNode>(graph));
+      }
       if (specs_[i]->gathers) {
         const int g = static_cast<int>(gathers_.size());
         gather_of_node_[i] = g;
@@ -150,54 +176,64 @@ class Execution {
           gather_of_node_[e.to] >= 0
               ? static_cast<flow::receiver<Envelope>&>(*gathers_[gather_of_node_[e.to]])
               : static_cast<flow::receiver<Envelope>&>(*nodes_[e.to]);
-      if (e.port == 0) {
-        flow::make_edge(flow::output_port<0>(*nodes_[e.from]), target);
-      } else {
-        flow::make_edge(flow::output_port<1>(*nodes_[e.from]), target);
-      }
+      flow::make_edge(*ports_[e.from][e.port], target);
     }
   }
 
   class PortEmitter : public Emitter {
    public:
-    PortEmitter(const NodeSpec& spec, const Envelope& in, FlowNode::output_ports_type& ports)
-        : spec_(spec), in_(in), ports_(ports) {}
+    PortEmitter(Execution& execution, int node, const Envelope& in)
+        : execution_(execution), node_(node), in_(in) {}
 
    protected:
-    void emit_any(int port, std::type_index type, std::any payload) override {
-      if (port < 0 || port >= static_cast<int>(spec_.outputs.size()) || port >= kMaxPorts) {
-        throw std::logic_error(spec_.name + " emitted on port " + std::to_string(port) +
-                               " which it does not declare");
+    void emit_any(std::string_view port, std::type_index type, std::any payload) override {
+      const NodeSpec& spec = *execution_.specs_[node_];
+      int index = -1;
+      for (std::size_t p = 0; p < spec.outputs.size(); ++p) {
+        if (spec.outputs[p].name == port) index = static_cast<int>(p);
       }
-      if (type != spec_.outputs[port].type.type) {
-        throw std::logic_error(spec_.name + " emitted a message that is not " +
-                               spec_.outputs[port].type.name + " on port '" +
-                               spec_.outputs[port].name + "'");
+      if (index < 0) {
+        throw InternalError(spec.name + " emitted on port '" + std::string(port) +
+                            "' which it does not declare");
       }
-      in_.model->in_flight.fetch_add(1);
-      Envelope out{in_.model, std::move(payload)};
-      const bool taken =
-          port == 0 ? std::get<0>(ports_).try_put(out) : std::get<1>(ports_).try_put(out);
-      if (!taken) in_.model->in_flight.fetch_sub(1);  // unconnected port: dropped
+      if (type != spec.outputs[index].type.type) {
+        throw InternalError(spec.name + " emitted a message that is not " +
+                            spec.outputs[index].type.name + " on port '" +
+                            spec.outputs[index].name + "'");
+      }
+      if (node_ == execution_.config_.entry && type == typeid(Model)) {
+        in_.model->set_input(std::any_cast<std::shared_ptr<const Model>>(payload)->summary);
+      }
+      const int successors = execution_.successors_[node_][index];
+      if (successors == 0) return;  // unconnected port: dropped
+      in_.model->in_flight.fetch_add(successors);
+      execution_.ports_[node_][index]->try_put(Envelope{in_.model, std::move(payload)});
     }
 
    private:
-    const NodeSpec& spec_;
+    Execution& execution_;
+    const int node_;
     const Envelope& in_;
-    FlowNode::output_ports_type& ports_;
   };
 
-  void run_node(int index, const Envelope& in, FlowNode::output_ports_type& ports) {
+  void run_node(int index, const Envelope& in) {
     ModelRun& model = *in.model;
     if (!model.failed()) {
       const auto start = std::chrono::steady_clock::now();
+      const std::string& node = config_.nodes[index].name;
       try {
-        PortEmitter emitter(*specs_[index], in, ports);
+        PortEmitter emitter(*this, index, in);
         bodies_[index]->process(in, emitter);
+      } catch (const std::invalid_argument& e) {
+        model.fail(node, e.what());  // the input's fault (InvalidInputException is one)
+      } catch (const std::logic_error& e) {
+        model.fail(node, e.what(), /*internal=*/true);  // InternalError, out_of_range, ...
+      } catch (const std::bad_cast& e) {
+        model.fail(node, e.what(), /*internal=*/true);  // a payload of the wrong type
       } catch (const std::exception& e) {
-        model.fail(config_.nodes[index].name, e.what());
+        model.fail(node, e.what());
       } catch (...) {
-        model.fail(config_.nodes[index].name, "unknown exception");
+        model.fail(node, "unknown exception", /*internal=*/true);
       }
       const auto elapsed = std::chrono::steady_clock::now() - start;
       model.node_stats[index].calls.fetch_add(1);
@@ -271,9 +307,10 @@ class Execution {
     result.name = model->name;
     result.input = model->input_path;
     result.ok = !model->failed();
+    result.internal_error = model->internal_error();
     result.error = model->error();
     result.seconds = model->seconds();
-    result.results = model->results();
+    result.record = model->record();
     if (result.ok) {
       spdlog::info("{}: done in {:.3f} s", model->name, result.seconds);
     } else {
@@ -312,6 +349,8 @@ class Execution {
   std::vector<const NodeSpec*> specs_;
   std::vector<std::shared_ptr<NodeBody>> bodies_;
   std::vector<std::unique_ptr<FlowNode>> nodes_;
+  std::vector<std::vector<std::unique_ptr<PortNode>>> ports_;  // [node][output port]
+  std::vector<std::vector<int>> successors_;                    // edges per [node][port]
   std::vector<std::unique_ptr<GatherNode>> gathers_;
   std::vector<int> gather_of_node_;
   std::vector<int> gather_order_;

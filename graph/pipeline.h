@@ -30,9 +30,10 @@ struct ModelResult {
   std::string name;
   std::filesystem::path input;
   bool ok = false;
+  bool internal_error = false;  // the error is a bug of papercraft, not of the input
   std::string error;
   double seconds = 0.0;
-  std::map<std::string, double> results;
+  ModelRecord record;
 };
 
 struct NodeTiming {
@@ -62,6 +63,9 @@ class Pipeline {
                                const PipelineOptions& options = {});
 
   const PipelineConfig& config() const { return config_; }
+
+  /// The refinement options the configured nodes give (what NodeContext::refine holds).
+  RefineOptions refine_options() const;
   std::vector<std::string> node_names() const;
 
   /// Node timings of a finished model (calls and seconds per configured node).

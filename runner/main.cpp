@@ -57,17 +57,13 @@ std::string batch_json(const std::vector<ModelResult>& results, const std::files
                           {"status", r.ok ? "ok" : "error"},
                           {"seconds", r.seconds}};
     if (!r.ok) row["error"] = r.error;
-    auto get = [&](const char* key) {
-      auto it = r.results.find(key);
-      return it == r.results.end() ? 0.0 : it->second;
-    };
     if (r.ok) {
       row["output"] = (out / r.name).string();
-      row["strips_3d"] = static_cast<long>(get("strips_3d"));
-      row["flat_strips"] = static_cast<long>(get("flat_strips"));
-      row["pages"] = static_cast<long>(get("pages"));
-      row["hausdorff_bound"] = get("hausdorff_bound");
-      row["certified"] = get("certified") > 0.5;
+      row["strips_3d"] = r.record.strips_3d;
+      row["flat_strips"] = r.record.flat_strips;
+      row["pages"] = r.record.pages;
+      row["hausdorff_bound"] = r.record.hausdorff_bound;
+      row["certified"] = r.record.certified;
     }
     rows.push_back(std::move(row));
   }
@@ -124,26 +120,30 @@ int execute(const RunRequest& request, const CommonOptions& common) {
   write_file_atomic(settings->output_dir / "batch.json", batch_json(results, settings->output_dir));
 
   int failed = 0;
+  bool internal = false;
   for (const auto& r : results) {
-    auto get = [&](const char* key) {
-      auto it = r.results.find(key);
-      return it == r.results.end() ? 0.0 : it->second;
-    };
     if (r.ok) {
-      const double largest = get("largest_side");
-      std::cout << r.name << ": ok, " << get("strips_3d") << " strips -> " << get("flat_strips")
-                << " flat strips on " << get("pages") << " page(s), "
-                << (get("certified") > 0.5 ? "certified" : "UNCERTIFIED") << " error <= "
-                << format_percent(largest > 0 ? 100 * get("hausdorff_bound") / largest : 0)
+      const ModelRecord& record = r.record;
+      const double largest = record.input.largest_side;
+      std::cout << r.name << ": ok, " << record.strips_3d << " strips -> " << record.flat_strips
+                << " flat strips on " << record.pages << " page(s), "
+                << (record.certified ? "certified" : "UNCERTIFIED") << " error <= "
+                << format_percent(largest > 0 ? 100 * record.hausdorff_bound / largest : 0)
                 << " of the largest side, " << r.seconds << " s -> "
                 << (settings->output_dir / r.name).string() << "/\n";
     } else {
       ++failed;
+      internal = internal || r.internal_error;
       std::cout << r.name << ": ERROR " << r.error << "\n";
     }
   }
   std::cout << results.size() - failed << " passed, " << failed << " failed; summary in "
             << (settings->output_dir / "batch.json").string() << "\n";
+  if (internal) {
+    spdlog::critical("internal error: a model failed on a bug of papercraft (see above); please "
+                     "report it");
+    return kExitInternal;
+  }
   return failed > 0 ? kExitModelFailed : kExitOk;
 }
 
@@ -291,7 +291,11 @@ int main_impl(int argc, char** argv) {
     if (*validate) {
       const PipelineConfig config = load_pipeline_config(validate_file, builtin_registry());
       // Building each node checks what only the node knows (e.g. segment.fuzzy's alternatives).
-      for (const auto& node : config.nodes) builtin_registry().find(node.impl)->create(node.params);
+      const Pipeline pipeline(config, builtin_registry());
+      const NodeContext context{pipeline.refine_options()};
+      for (const auto& node : config.nodes) {
+        builtin_registry().find(node.impl)->create(node.params, context);
+      }
       int back = 0;
       for (const auto& e : config.edges) back += e.back ? 1 : 0;
       std::cout << validate_file << ": ok (" << config.nodes.size() << " nodes, "

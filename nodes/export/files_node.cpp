@@ -10,15 +10,21 @@
 #include "core/atomic_file.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
+#include "graph/param_table.h"
 #include "graph/registry.h"
 #include "nodes/export/files.h"
 #include "nodes/export/pdf.h"
-#include "nodes/export/report.h"
+#include "nodes/export/report_node.h"
 #include "nodes/export/svg.h"
 
 namespace papercraft {
 
 namespace {
+
+struct ExportOptions {
+  std::vector<std::string> formats = {"pdf", "svg", "obj", "json", "ply"};
+  StyleOptions style;
+};
 
 bool wants(const std::vector<std::string>& formats, const std::string& format) {
   return std::find(formats.begin(), formats.end(), format) != formats.end();
@@ -30,12 +36,13 @@ nlohmann::json vec3_json(const Vec3& p) {
 
 }  // namespace
 
-nlohmann::json model_report(const ModelRun& model, const ModelStrips* strips) {
+nlohmann::json model_report(const ModelRun& model) {
+  const ModelRecord record = model.record();
   nlohmann::json report;
   report["version"] = PAPERCRAFT_VERSION;
   nlohmann::json input = {{"path", model.input_path.string()}, {"name", model.name}};
-  if (strips && strips->model) {
-    const MeshSummary& s = strips->model->summary;
+  if (record.loaded) {
+    const MeshSummary& s = record.input;
     input["vertices"] = s.vertices;
     input["faces"] = s.faces;
     input["bounding_box"] = {{"min", vec3_json(s.box_min)}, {"max", vec3_json(s.box_max)}};
@@ -47,29 +54,23 @@ nlohmann::json model_report(const ModelRun& model, const ModelStrips* strips) {
   }
   report["input"] = input;
   const ToleranceSpec& spec = model.settings->tolerance;
-  const double largest = model.largest_side.load();
-  const double absolute = model.tolerance.load();
-  report["tolerance"] = {{"given", spec.to_string()},
-                         {"absolute", absolute},
-                         {"relative_percent", largest > 0 ? 100.0 * absolute / largest : 0.0}};
-  const auto results = model.results();
-  auto value = [&](const std::string& key) {
-    auto it = results.find(key);
-    return it == results.end() ? 0.0 : it->second;
-  };
-  const double bound = value("hausdorff_bound");
+  const double largest = record.input.largest_side;
+  report["tolerance"] = {
+      {"given", spec.to_string()},
+      {"absolute", record.tolerance},
+      {"relative_percent", largest > 0 ? 100.0 * record.tolerance / largest : 0.0}};
   report["result"] = {
-      {"certified", value("certified") > 0.5},
-      {"hausdorff_bound", bound},
-      {"hausdorff_bound_percent", largest > 0 ? 100.0 * bound / largest : 0.0},
-      {"strips_3d", static_cast<long>(value("strips_3d"))},
-      {"flat_strips_before_merge", static_cast<long>(value("flat_strips_before_merge"))},
-      {"flat_strips", static_cast<long>(value("flat_strips"))},
-      {"pages", static_cast<long>(value("pages"))},
-      {"shelf_pages", static_cast<long>(value("shelf_pages"))},
-      {"segments", static_cast<long>(value("segments"))},
-      {"cuts", static_cast<long>(value("cuts"))},
-      {"mm_per_unit", value("mm_per_unit")}};
+      {"certified", record.certified},
+      {"hausdorff_bound", record.hausdorff_bound},
+      {"hausdorff_bound_percent", largest > 0 ? 100.0 * record.hausdorff_bound / largest : 0.0},
+      {"strips_3d", record.strips_3d},
+      {"flat_strips_before_merge", record.flat_strips_before_merge},
+      {"flat_strips", record.flat_strips},
+      {"pages", record.pages},
+      {"shelf_pages", record.shelf_pages},
+      {"segments", record.segments},
+      {"cuts", record.cuts},
+      {"mm_per_unit", record.mm_per_unit}};
   nlohmann::json nodes = nlohmann::json::object();
   for (std::size_t i = 0; i < model.node_labels.size(); ++i) {
     nodes[model.node_labels[i].first] = {
@@ -80,31 +81,32 @@ nlohmann::json model_report(const ModelRun& model, const ModelStrips* strips) {
   report["timing"] = {{"total_seconds", model.seconds()}, {"nodes", nodes}};
   report["threads"] = model.settings->threads;
   report["config"] = {{"file", model.settings->config_file}, {"text", model.settings->config_text}};
-  report["notes"] = model.notes();
+  report["notes"] = record.notes;
   return report;
 }
 
 void register_export_files(Registry& registry) {
+  using O = ExportOptions;
+  static const auto table =
+      ParamTable<O>()
+          .add("formats", [](O& o) -> auto& { return o.formats; },
+               "which files to write besides report.json", {},
+               {"pdf", "svg", "obj", "json", "ply"})
+          .choice("preset", [](O& o) -> auto& { return o.style.preset; },
+                  std::vector<std::pair<std::string, StylePreset>>{
+                      {"print", StylePreset::Print},
+                      {"laser", StylePreset::Laser},
+                      {"cutter", StylePreset::Cutter}},
+                  "colours and line styles: print, laser (cut red, score blue) or cutter");
   registry.add(
-      {"export.files",
-       "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
-       MessageType::of<Pattern>(),
-       false,
-       {},
-       {{"formats",
-         ParamType::StringList,
-         "[pdf, svg, obj, json, ply]",
-         "which files to write besides report.json",
-         {"pdf", "svg", "obj", "json", "ply"}},
-        {"preset",
-         ParamType::String,
-         "print",
-         "colours and line styles: print, laser (cut red, score blue) or cutter",
-         {"print", "laser", "cutter"}}},
-       [](const Params& params) {
-         const std::vector<std::string> formats = params.strings("formats");
-         StyleOptions style;
-         style.preset = style_preset_from_name(params.string("preset"));
+      {.name = "export.files",
+       .summary = "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
+       .input = MessageType::of<Pattern>(),
+       .params = table.specs(),
+       .create = [](const Params& params, const NodeContext&) {
+         const ExportOptions options = table.read(params);
+         const std::vector<std::string>& formats = options.formats;
+         const StyleOptions& style = options.style;
          return make_body([formats, style](const Envelope& in, Emitter&) {
            const Pattern& pattern = in.get<Pattern>();
            const ModelStrips& strips = *pattern.strips;
@@ -130,9 +132,9 @@ void register_export_files(Registry& registry) {
              const auto distances = vertex_distances(*strips.model->mesh, all);
              double worst = 0.0;
              for (double d : distances) worst = std::max(worst, d);
-             model.set_result("max_vertex_distance", worst);
+             model.update([worst](ModelRecord& record) { record.max_vertex_distance = worst; });
              write_file_atomic(dir / "error.ply",
-                               error_ply(*strips.model->mesh, distances, model.tolerance.load()));
+                               error_ply(*strips.model->mesh, distances, model.tolerance()));
            }
            if (pattern.layout) {
              const PatternLayout& layout = *pattern.layout;
@@ -161,7 +163,7 @@ void register_export_files(Registry& registry) {
                });
              }
            }
-           write_file_atomic(dir / "report.json", model_report(model, &strips).dump(2) + "\n");
+           write_file_atomic(dir / "report.json", model_report(model).dump(2) + "\n");
          });
        }});
 }

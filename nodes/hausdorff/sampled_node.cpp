@@ -4,28 +4,18 @@
 //               to: {accept: [unfold], reject: [cut]}}
 
 #include "graph/registry.h"
-#include "nodes/hausdorff/emit_verdict.h"
-#include "nodes/hausdorff/sampled.h"
+#include "nodes/hausdorff/verdict_node.h"
 
 namespace papercraft {
 
 void register_hausdorff_sampled(Registry& registry) {
-  registry.add(
-      {"hausdorff.sampled",
-       "sampled (Metro-like) Hausdorff decision; NOT certified",
-       MessageType::of<StripCandidate>(),
-       false,
-       hausdorff_ports(),
-       {{"face_samples", ParamType::Integer, "100000", "samples spread over each surface"}},
-       [](const Params& params) {
-         SampledHausdorffOptions options;
-         options.face_samples = static_cast<std::size_t>(params.integer("face_samples"));
-         return make_body([options](const Envelope& in, Emitter& out) {
-           decide_and_emit(in, out, [&](const TriangleMesh& a, const TriangleMesh& b, double tau) {
-             return sampled_hausdorff_within(a, b, tau, options);
-           });
-         });
-       }});
+  using O = RefineOptions;
+  static const auto table = ParamTable<O>().add(
+      "face_samples", [](O& o) -> auto& { return o.decide.sampling.face_samples; },
+      "samples spread over each surface", at_least(1));
+  registry.add(hausdorff_spec("hausdorff.sampled",
+                              "sampled (Metro-like) Hausdorff decision; NOT certified", true,
+                              table));
 }
 
 }  // namespace papercraft

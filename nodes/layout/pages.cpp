@@ -1550,6 +1550,19 @@ PageSize page_size_from_name(std::string_view name) {
                               "mm (e.g. 200x300)");
 }
 
+std::string page_size_name(const PageSize& page) {
+  static const std::pair<const char*, PageSize> named[] = {
+      {"A3", {297.0, 420.0}},     {"A4", {210.0, 297.0}},    {"A5", {148.0, 210.0}},
+      {"Letter", {215.9, 279.4}}, {"Legal", {215.9, 355.6}}, {"Tabloid", {279.4, 431.8}},
+  };
+  for (const auto& [name, size] : named) {
+    if (size.width_mm == page.width_mm && size.height_mm == page.height_mm) return name;
+  }
+  std::ostringstream text;
+  text << page.width_mm << "x" << page.height_mm;
+  return text.str();
+}
+
 double layout_scale(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
   validate_options(options);
   if (options.scale > 0) return options.scale;

@@ -43,6 +43,9 @@ namespace papercraft {
 /// \throws InvalidInputException for any other name or a non-positive size.
 PageSize page_size_from_name(std::string_view name);
 
+/// The name page_size_from_name reads back: "A4" for the named sizes, else "200x300".
+std::string page_size_name(const PageSize& page);
+
 enum class PackingMethod {
   MaxRects,  // maximal rectangles with 90 degree rotation, several orders; never worse than Shelf
   Shelf,     // next-fit decreasing height shelves (the plain baseline)

@@ -6,44 +6,57 @@
 #include "core/errors.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
+#include "graph/param_table.h"
 #include "graph/registry.h"
 #include "nodes/layout/pages.h"
 
 namespace papercraft {
 
+namespace {
+
+PageSize page_of(const ParamValue& value) {
+  try {
+    return page_size_from_name(std::get<std::string>(value));
+  } catch (const InvalidInputException& e) {
+    throw std::invalid_argument(e.what());
+  }
+}
+
+}  // namespace
+
 void register_layout_pages(Registry& registry) {
+  using O = LayoutOptions;
+  static const auto table =
+      ParamTable<O>()
+          .convert("page", ParamType::String, [](O& o) -> auto& { return o.page; },
+                   page_size_name, page_of,
+                   "A3, A4, A5, Letter, Legal, Tabloid or WIDTHxHEIGHT in mm (e.g. 300x450)")
+          .add("margin_mm", [](O& o) -> auto& { return o.margin_mm; },
+               "blank border on every side of a page", at_least(0))
+          .add("height_mm", [](O& o) -> auto& { return o.height_mm; },
+               "size of the model's largest bounding-box side on paper (--height overrides)",
+               greater_than(0))
+          .add("tab_width_mm", [](O& o) -> auto& { return o.tab_width_mm; },
+               "glue tab width (0: no tabs)", at_least(0))
+          .add("fold_angle_degrees", [](O& o) -> auto& { return o.fold_angle_degrees; },
+               "inner edges bent more than this get a fold line", between(0, 180))
+          .add("strong_fold_angle_degrees",
+               [](O& o) -> auto& { return o.strong_fold_angle_degrees; },
+               "folds bent less than this are drawn as faint gentle-bend marks", between(0, 180))
+          .add("spacing_mm", [](O& o) -> auto& { return o.spacing_mm; }, "gap between pieces",
+               at_least(0))
+          .choice("packing", [](O& o) -> auto& { return o.packing; },
+                  std::vector<std::pair<std::string, PackingMethod>>{
+                      {"maxrects", PackingMethod::MaxRects}, {"shelf", PackingMethod::Shelf}},
+                  "maxrects or shelf");
   registry.add(
-      {"layout.pages",
-       "real-world scale, tightest rotation, MaxRects packing onto pages",
-       MessageType::of<ModelStrips>(),
-       false,
-       {{"out", MessageType::of<Pattern>()}},
-       {{"page", ParamType::String, "A4", "A4, A3, Letter or WIDTHxHEIGHT in mm (e.g. 300x450)"},
-        {"margin_mm", ParamType::Number, "10", "blank border on every side of a page"},
-        {"height_mm", ParamType::Number, "200",
-         "size of the model's largest bounding-box side on paper (--height overrides)"},
-        {"tab_width_mm", ParamType::Number, "5", "glue tab width (0: no tabs)"},
-        {"fold_angle_degrees", ParamType::Number, "0.5",
-         "inner edges bent more than this get a fold line"},
-        {"strong_fold_angle_degrees", ParamType::Number, "10",
-         "folds bent less than this are drawn as faint gentle-bend marks"},
-        {"spacing_mm", ParamType::Number, "2", "gap between pieces"},
-        {"packing", ParamType::String, "maxrects", "maxrects or shelf", {"maxrects", "shelf"}}},
-       [](const Params& params) {
-         LayoutOptions options;
-         try {
-           options.page = page_size_from_name(params.string("page"));
-         } catch (const std::exception& e) {
-           throw std::invalid_argument("page: " + std::string(e.what()));
-         }
-         options.margin_mm = params.number("margin_mm");
-         options.height_mm = params.number("height_mm");
-         options.tab_width_mm = params.number("tab_width_mm");
-         options.fold_angle_degrees = params.number("fold_angle_degrees");
-         options.strong_fold_angle_degrees = params.number("strong_fold_angle_degrees");
-         options.spacing_mm = params.number("spacing_mm");
-         options.packing =
-             params.string("packing") == "shelf" ? PackingMethod::Shelf : PackingMethod::MaxRects;
+      {.name = "layout.pages",
+       .summary = "real-world scale, tightest rotation, MaxRects packing onto pages",
+       .input = MessageType::of<ModelStrips>(),
+       .outputs = {{"out", MessageType::of<Pattern>()}},
+       .params = table.specs(),
+       .create = [](const Params& params, const NodeContext&) {
+         const LayoutOptions options = table.read(params);
          return make_body([options](const Envelope& in, Emitter& out) {
            auto strips = in.get_shared<ModelStrips>();
            LayoutOptions run_options = options;
@@ -52,13 +65,15 @@ void register_layout_pages(Registry& registry) {
            if (settings.scale > 0) run_options.scale = settings.scale;
            auto layout = std::make_shared<PatternLayout>(layout_pages(strips->flat, run_options));
            for (const auto& warning : layout->warnings) in.model->note(warning);
-           in.model->set_result("pages", static_cast<double>(layout->pages.size()));
-           in.model->set_result("shelf_pages", static_cast<double>(layout->shelf_page_count));
-           in.model->set_result("mm_per_unit", layout->mm_per_unit);
+           in.model->update([&](ModelRecord& record) {
+             record.pages = static_cast<int>(layout->pages.size());
+             record.shelf_pages = layout->shelf_page_count;
+             record.mm_per_unit = layout->mm_per_unit;
+           });
            Pattern pattern;
            pattern.strips = strips;
            pattern.layout = layout;
-           out.emit(0, std::move(pattern));
+           out.emit("out", std::move(pattern));
          });
        }});
 }

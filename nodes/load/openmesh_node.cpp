@@ -1,5 +1,5 @@
 // load.openmesh — read OBJ/OFF/PLY/STL with OpenMesh's readers, validate, repair what is
-// safe, and fix the model's absolute tolerance from its bounding box.
+// safe. The framework fixes the model's absolute tolerance from the loaded bounding box.
 //
 //   load: {impl: load.openmesh, params: {repair: true}, to: [segment]}
 
@@ -8,6 +8,7 @@
 #include "core/errors.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
+#include "graph/param_table.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
 #include "nodes/load/openmesh.h"
@@ -33,19 +34,21 @@ MeshSummary summarize(const Mesh& mesh, bool has_uvs) {
 }
 
 void register_load_openmesh(Registry& registry) {
+  using O = LoadOptions;
+  static const auto table =
+      ParamTable<O>()
+          .add("repair", [](O& o) -> auto& { return o.repair; },
+               "remove unreferenced vertices and merge exactly duplicate vertices (logged)")
+          .add("max_faces", [](O& o) -> auto& { return o.max_faces; }, "refuse larger meshes",
+               at_least(1));
   registry.add(
-      {"load.openmesh",
-       "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
-       MessageType::of<Job>(),
-       false,
-       {{"out", MessageType::of<Model>()}},
-       {{"repair", ParamType::Boolean, "true",
-         "remove unreferenced vertices and merge exactly duplicate vertices (logged)"},
-        {"max_faces", ParamType::Integer, "50000000", "refuse larger meshes"}},
-       [](const Params& params) {
-         LoadOptions options;
-         options.repair = params.boolean("repair");
-         options.max_faces = static_cast<std::size_t>(params.integer("max_faces"));
+      {.name = "load.openmesh",
+       .summary = "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
+       .input = MessageType::of<Job>(),
+       .outputs = {{"out", MessageType::of<Model>()}},
+       .params = table.specs(),
+       .create = [](const Params& params, const NodeContext&) {
+         const LoadOptions options = table.read(params);
          return make_body([options](const Envelope& in, Emitter& out) {
            const Job& job = in.get<Job>();
            LoadedMesh loaded = load_mesh(job.input, options);
@@ -61,12 +64,7 @@ void register_load_openmesh(Registry& registry) {
            }
            model.texture_path = loaded.texture_path;
            model.mesh = std::make_shared<const Mesh>(std::move(loaded.mesh));
-           ModelRun& run = *in.model;
-           run.largest_side.store(model.summary.largest_side);
-           run.tolerance.store(run.settings->tolerance.absolute(model.summary.largest_side));
-           run.set_result("largest_side", model.summary.largest_side);
-           run.set_result("input_faces", static_cast<double>(model.summary.faces));
-           out.emit(0, std::move(model));
+           out.emit("out", std::move(model));
          });
        }});
 }

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "nodes/merge/collect.h"
+#include "nodes/merge/collect_node.h"
 #include "core/seams.h"
 
 namespace papercraft {

@@ -22,7 +22,7 @@
 #include "nodes/segment/face_regions.h"
 #include "nodes/segment/labelled_surface.h"
 #include "nodes/segment/straighten.h"
-#include "nodes/segment/strip_estimate.h"
+#include "nodes/refine/refine.h"
 
 namespace papercraft {
 namespace {
@@ -389,7 +389,7 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
   return label;
 }
 
-// estimate_strips, remembered: the same region is judged whole at one level, as a part of
+// count_strips, remembered: the same region is judged whole at one level, as a part of
 // several candidate decompositions, again as emitted, and by the hierarchies of the
 // alternative settings. An entry holds the exact count if it is at most the cap it was
 // computed with, else only that the count exceeds that cap, so a hit returns what a fresh call
@@ -399,7 +399,8 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
 // certified: every strip is still decided against its own part.
 class EstimateCache {
  public:
-  explicit EstimateCache(double tolerance) : tolerance_(tolerance) {}
+  EstimateCache(double tolerance, const RefineOptions& refine)
+      : tolerance_(tolerance), refine_(refine) {}
 
   int estimate(const Mesh& part, int cap) {
     const std::uint64_t key = geometry_hash(part);
@@ -412,7 +413,7 @@ class EstimateCache {
         if (cap <= computed_cap) return cap + 1;
       }
     }
-    const int count = estimate_strips(part, tolerance_, cap);
+    const int count = count_strips(part, tolerance_, refine_, cap);
     std::lock_guard lock(mutex_);
     const auto [it, inserted] = entries_.try_emplace(key, count, cap);
     if (!inserted) {
@@ -448,6 +449,7 @@ class EstimateCache {
   }
 
   const double tolerance_;
+  const RefineOptions& refine_;
   std::mutex mutex_;
   std::unordered_map<std::uint64_t, std::pair<int, int>> entries_;  // count, cap
 };
@@ -845,6 +847,20 @@ FuzzyAlternative parse_fuzzy_alternative(const std::string& text) {
   return alternative;
 }
 
+std::string format_fuzzy_alternative(const FuzzyAlternative& alternative) {
+  std::string text;
+  auto setting = [&](const char* key, const std::optional<double>& value) {
+    if (!value) return;
+    std::ostringstream number;
+    number << *value;
+    text += (text.empty() ? "" : " ") + std::string(key) + "=" + number.str();
+  };
+  setting("angular_weight", alternative.angular_weight);
+  setting("convex_eta", alternative.convex_eta);
+  setting("fuzzy_epsilon", alternative.fuzzy_epsilon);
+  return text;
+}
+
 std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& options) {
   require_segmentable(mesh, "segment_fuzzy");
   validate(options);
@@ -855,7 +871,7 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
     if (component[f] >= static_cast<int>(components.size())) components.resize(component[f] + 1);
     components[component[f]].push_back(static_cast<int>(f));
   }
-  EstimateCache estimates(options.strip_tolerance);
+  EstimateCache estimates(options.strip_tolerance, options.refine);
   // One hierarchy's regions as face labels, and whether it split anything. On a connected
   // model, judged by strips, a decomposition costing more than `cap` is not looked for (the
   // hierarchy's branches are cut off as soon as they cost more).

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "nodes/refine/refine.h"
 
 namespace papercraft {
 
@@ -28,6 +29,9 @@ struct FuzzyAlternative {
 /// Parses "angular_weight=0.5 fuzzy_epsilon=0.2" (settings separated by spaces).
 /// \throws InvalidInputException on an unknown setting or a value that is not a number.
 FuzzyAlternative parse_fuzzy_alternative(const std::string& text);
+
+/// The text parse_fuzzy_alternative reads back: "angular_weight=0.5 fuzzy_epsilon=0.2".
+std::string format_fuzzy_alternative(const FuzzyAlternative& alternative);
 
 struct FuzzySegmentOptions {
   /// Number of parts of a single (non-hierarchical) k-way decomposition, >= 2; 0 chooses the
@@ -65,12 +69,15 @@ struct FuzzySegmentOptions {
   /// smaller than twice this is not decomposed further. In [0, 1).
   double min_area_fraction = 0.01;
   /// With parts == 0 and a positive value, each level of the hierarchy is judged by its cost:
-  /// the default refinement (select.geodesic, ruled.twist_dp, hausdorff.bounded, cut.harmonic)
-  /// is run on the region and on its parts at this absolute tolerance, and the decomposition
+  /// the refinement (nodes/refine/refine.h, with `refine`) is run on the region and on its
+  /// parts at this absolute tolerance, and the decomposition
   /// (with or without the boundaries the rule above would drop) that makes the fewest strips
   /// is kept, none unless it makes fewer strips than the region whole. 0 turns this off.
   /// The segment.fuzzy node sets it to the model's tolerance (param strip_estimate).
   double strip_tolerance = 0;
+  /// The refinement that judges the levels: the pipeline's own (the segment.fuzzy node passes
+  /// the options of the configured select, ruled, hausdorff and cut nodes).
+  RefineOptions refine;
   /// With strip_tolerance > 0, also judge the two-way split between each region's farthest
   /// faces (Katz & Tal's two-part decomposition) at every level.
   bool two_way_candidate = true;

@@ -1,89 +1,111 @@
 // segment.fuzzy — hierarchical fuzzy clustering with minimum cuts (Katz & Tal 2003), the
-// boundaries straightened along harmonic iso-lines.
+// boundaries straightened along harmonic iso-lines; with strip_estimate, each level judged by
+// what the pipeline's own refinement (NodeContext::refine) makes of it.
 //
 //   segment: {impl: segment.fuzzy, params: {parts: 0, max_depth: 3}, to: [select]}
 
 #include "core/errors.h"
+#include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/segment/emit_parts.h"
+#include "nodes/segment/parts_node.h"
 #include "nodes/segment/fuzzy.h"
 #include "nodes/segment/none.h"
 
 namespace papercraft {
 
+namespace {
+
+struct FuzzyNodeOptions {
+  FuzzySegmentOptions segment;
+  bool strip_estimate = true;
+  bool parts_ply = true;
+};
+
+std::vector<FuzzyAlternative> alternatives_of(const ParamValue& value) {
+  std::vector<FuzzyAlternative> alternatives;
+  for (const std::string& text : std::get<std::vector<std::string>>(value)) {
+    try {
+      alternatives.push_back(parse_fuzzy_alternative(text));
+    } catch (const InvalidInputException& e) {
+      throw std::invalid_argument(e.what());
+    }
+  }
+  return alternatives;
+}
+
+std::string alternatives_text(const std::vector<FuzzyAlternative>& alternatives) {
+  std::vector<std::string> texts;
+  for (const auto& alternative : alternatives) texts.push_back(format_fuzzy_alternative(alternative));
+  return format_param_value(ParamValue(texts));
+}
+
+}  // namespace
+
 void register_segment_fuzzy(Registry& registry) {
-  registry.add({"segment.fuzzy",
-                "Katz-Tal hierarchical fuzzy decomposition with straightened cuts",
-                MessageType::of<Model>(),
-                false,
-                {{"out", MessageType::of<Part>()}},
-                {{"parts", ParamType::Integer, "0", "parts per level; 0 chooses automatically"},
-                 {"max_parts", ParamType::Integer, "10", "upper bound when choosing automatically"},
-                 {"max_depth", ParamType::Integer, "3", "levels of the hierarchy"},
-                 {"angular_weight", ParamType::Number, "0.8",
-                  "weight of the angular term in the dual-graph distance (1 - delta of Katz-Tal)"},
-                 {"alternatives", ParamType::StringList, "[angular_weight=0.5, fuzzy_epsilon=0.2]",
-                  "with strip_estimate, also build the hierarchy with each of these settings "
-                  "(angular_weight, convex_eta, fuzzy_epsilon; several separated by spaces) and "
-                  "keep the decomposition that makes the fewest strips; [] for none"},
-                 {"fuzzy_epsilon", ParamType::Number, "0.1", "width of the fuzzy region"},
-                 {"convex_eta", ParamType::Number, "0.1",
-                  "angular distance factor of convex edges (concave ones get 1)"},
-                 {"neck_ratio", ParamType::Number, "2",
-                  "a boundary stays if its size squared / smaller part area is at most this"},
-                 {"crease_angle_degrees", ParamType::Number, "20",
-                  "a boundary stays if the surface folds concavely across it by this much"},
-                 {"straighten_width", ParamType::Number, "3",
-                  "half-width of the band a boundary may move in, in mean edge lengths"},
-                 {"straighten", ParamType::Boolean, "true",
-                  "straighten cut boundaries along harmonic iso-lines"},
-                 {"min_area_fraction", ParamType::Number, "0.01",
-                  "parts smaller than this fraction of the area join a neighbour"},
-                 {"strip_estimate", ParamType::Boolean, "true",
-                  "keep a decomposition only if the refinement makes fewer strips of its parts "
-                  "(estimated at the model's tolerance)"},
-                 {"two_way_candidate", ParamType::Boolean, "true",
-                  "with strip_estimate, also judge each region's two-way farthest-faces split"},
-                 {"single_part_candidates", ParamType::Boolean, "true",
-                  "with strip_estimate, also judge each part of a decomposition split off alone"},
-                 {"merge_neighbours", ParamType::Boolean, "true",
-                  "with strip_estimate, then merge adjacent parts whose union makes fewer strips"},
-                 {"parts_ply", ParamType::Boolean, "true",
-                  "write the parts, faces coloured by part, to <output>/parts.ply"}},
-                [](const Params& params) {
-                  FuzzySegmentOptions options;
-                  options.parts = static_cast<int>(params.integer("parts"));
-                  options.max_parts = static_cast<int>(params.integer("max_parts"));
-                  options.max_depth = static_cast<int>(params.integer("max_depth"));
-                  options.angular_weight = params.number("angular_weight");
-                  options.alternatives.clear();
-                  for (const std::string& text : params.strings("alternatives")) {
-                    try {
-                      options.alternatives.push_back(parse_fuzzy_alternative(text));
-                    } catch (const InvalidInputException& e) {
-                      throw ConfigException("segment.fuzzy: alternatives: " +
-                                            std::string(e.what()));
-                    }
-                  }
-                  options.fuzzy_epsilon = params.number("fuzzy_epsilon");
-                  options.convex_eta = params.number("convex_eta");
-                  options.neck_ratio = params.number("neck_ratio");
-                  options.crease_angle_degrees = params.number("crease_angle_degrees");
-                  options.straighten_width = params.number("straighten_width");
-                  options.straighten = params.boolean("straighten");
-                  options.two_way_candidate = params.boolean("two_way_candidate");
-                  options.single_part_candidates = params.boolean("single_part_candidates");
-                  options.merge_neighbours = params.boolean("merge_neighbours");
-                  options.min_area_fraction = params.number("min_area_fraction");
-                  const bool parts_ply = params.boolean("parts_ply");
-                  const bool strip_estimate = params.boolean("strip_estimate");
-                  return make_body([options, parts_ply, strip_estimate](const Envelope& in,
-                                                                        Emitter& out) {
-                    FuzzySegmentOptions run_options = options;
-                    if (strip_estimate) run_options.strip_tolerance = in.model->tolerance.load();
+  using O = FuzzyNodeOptions;
+  static const auto table =
+      ParamTable<O>()
+          .add("parts", [](O& o) -> auto& { return o.segment.parts; },
+               "parts per level; 0 chooses automatically", at_least(0))
+          .add("max_parts", [](O& o) -> auto& { return o.segment.max_parts; },
+               "upper bound when choosing automatically", at_least(2))
+          .add("max_depth", [](O& o) -> auto& { return o.segment.max_depth; },
+               "levels of the hierarchy", at_least(1))
+          .add("angular_weight", [](O& o) -> auto& { return o.segment.angular_weight; },
+               "weight of the angular term in the dual-graph distance (1 - delta of Katz-Tal)",
+               between(0, 1))
+          .convert(
+              "alternatives", ParamType::StringList,
+              [](O& o) -> auto& { return o.segment.alternatives; }, alternatives_text,
+              alternatives_of,
+              "with strip_estimate, also build the hierarchy with each of these settings "
+              "(angular_weight, convex_eta, fuzzy_epsilon; several separated by spaces) and "
+              "keep the decomposition that makes the fewest strips; [] for none")
+          .add("fuzzy_epsilon", [](O& o) -> auto& { return o.segment.fuzzy_epsilon; },
+               "width of the fuzzy region", ParamRange{0.0, 0.5, false, true})
+          .add("convex_eta", [](O& o) -> auto& { return o.segment.convex_eta; },
+               "angular distance factor of convex edges (concave ones get 1)",
+               ParamRange{0.0, 1.0, true, false})
+          .add("neck_ratio", [](O& o) -> auto& { return o.segment.neck_ratio; },
+               "a boundary stays if its size squared / smaller part area is at most this",
+               greater_than(0))
+          .add("crease_angle_degrees", [](O& o) -> auto& { return o.segment.crease_angle_degrees; },
+               "a boundary stays if the surface folds concavely across it by this much",
+               between(0, 180))
+          .add("straighten_width", [](O& o) -> auto& { return o.segment.straighten_width; },
+               "half-width of the band a boundary may move in, in mean edge lengths",
+               greater_than(0))
+          .add("straighten", [](O& o) -> auto& { return o.segment.straighten; },
+               "straighten cut boundaries along harmonic iso-lines")
+          .add("min_area_fraction", [](O& o) -> auto& { return o.segment.min_area_fraction; },
+               "parts smaller than this fraction of the area join a neighbour",
+               ParamRange{0.0, 1.0, false, true})
+          .add("strip_estimate", [](O& o) -> auto& { return o.strip_estimate; },
+               "keep a decomposition only if the refinement makes fewer strips of its parts "
+               "(estimated at the model's tolerance)")
+          .add("two_way_candidate", [](O& o) -> auto& { return o.segment.two_way_candidate; },
+               "with strip_estimate, also judge each region's two-way farthest-faces split")
+          .add("single_part_candidates",
+               [](O& o) -> auto& { return o.segment.single_part_candidates; },
+               "with strip_estimate, also judge each part of a decomposition split off alone")
+          .add("merge_neighbours", [](O& o) -> auto& { return o.segment.merge_neighbours; },
+               "with strip_estimate, then merge adjacent parts whose union makes fewer strips")
+          .add("parts_ply", [](O& o) -> auto& { return o.parts_ply; },
+               "write the parts, faces coloured by part, to <output>/parts.ply");
+  registry.add({.name = "segment.fuzzy",
+                .summary = "Katz-Tal hierarchical fuzzy decomposition with straightened cuts",
+                .input = MessageType::of<Model>(),
+                .outputs = {{"out", MessageType::of<Part>()}},
+                .params = table.specs(),
+                .create = [](const Params& params, const NodeContext& context) {
+                  FuzzyNodeOptions options = table.read(params);
+                  options.segment.refine = context.refine;
+                  return make_body([options](const Envelope& in, Emitter& out) {
+                    FuzzySegmentOptions run = options.segment;
+                    if (options.strip_estimate) run.strip_tolerance = in.model->tolerance();
                     Mesh mesh = *in.get<Model>().mesh;
                     tag_input_vertices(mesh);
-                    emit_parts(in, out, segment_fuzzy(mesh, run_options), parts_ply);
+                    emit_parts(in, out, segment_fuzzy(mesh, run), options.parts_ply);
                   });
                 }});
 }

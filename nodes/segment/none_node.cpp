@@ -3,19 +3,17 @@
 //   segment: {impl: segment.none, to: [select]}
 
 #include "graph/registry.h"
-#include "nodes/segment/emit_parts.h"
+#include "nodes/segment/parts_node.h"
 #include "nodes/segment/none.h"
 
 namespace papercraft {
 
 void register_segment_none(Registry& registry) {
-  registry.add({"segment.none",
-                "no segmentation: one part per connected component",
-                MessageType::of<Model>(),
-                false,
-                {{"out", MessageType::of<Part>()}},
-                {},
-                [](const Params&) {
+  registry.add({.name = "segment.none",
+                .summary = "no segmentation: one part per connected component",
+                .input = MessageType::of<Model>(),
+                .outputs = {{"out", MessageType::of<Part>()}},
+                .create = [](const Params&, const NodeContext&) {
                   return make_body([](const Envelope& in, Emitter& out) {
                     emit_parts(in, out, segment_none(*in.get<Model>().mesh));
                   });

@@ -4,28 +4,30 @@
 //   unfold: {impl: unfold.sequential, to: [merge]}
 
 #include "graph/messages.h"
+#include "graph/param_table.h"
 #include "graph/registry.h"
 #include "nodes/unfold/sequential.h"
 
 namespace papercraft {
 
 void register_unfold_sequential(Registry& registry) {
-  registry.add({"unfold.sequential",
-                "isometric unfolding with a 2D overlap test (grid)",
-                MessageType::of<AcceptedStrip>(),
-                false,
-                {{"out", MessageType::of<UnfoldedStrip>()}},
-                {{"overlap_tolerance", ParamType::Number, "1e-9",
-                  "relative penetration below which touching triangles do not overlap"}},
-                [](const Params& params) {
-                  UnfoldOptions options;
-                  options.overlap_tolerance = params.number("overlap_tolerance");
+  using O = UnfoldOptions;
+  static const auto table = ParamTable<O>().add(
+      "overlap_tolerance", [](O& o) -> auto& { return o.overlap_tolerance; },
+      "relative penetration below which touching triangles do not overlap", at_least(0));
+  registry.add({.name = "unfold.sequential",
+                .summary = "isometric unfolding with a 2D overlap test (grid)",
+                .input = MessageType::of<AcceptedStrip>(),
+                .outputs = {{"out", MessageType::of<UnfoldedStrip>()}},
+                .params = table.specs(),
+                .create = [](const Params& params, const NodeContext&) {
+                  const UnfoldOptions options = table.read(params);
                   return make_body([options](const Envelope& in, Emitter& out) {
                     auto accepted = in.get_shared<AcceptedStrip>();
                     UnfoldedStrip unfolded;
                     unfolded.strip = accepted;
                     unfolded.flat = unfold_strip(*accepted->strip, -1, 0, options);
-                    out.emit(0, std::move(unfolded));
+                    out.emit("out", std::move(unfolded));
                   });
                 }});
 }

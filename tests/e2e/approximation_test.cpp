@@ -11,7 +11,8 @@
 
 #include "core/generate.h"
 #include "graph/registry.h"
-#include "nodes/cut/rejected.h"
+#include "graph/config.h"
+#include "graph/pipeline.h"
 #include "support/brute_force_hausdorff.h"
 #include "support/pipeline_run.h"
 
@@ -126,24 +127,44 @@ TEST(Approximation, SharpSlabNeedsFewStripsAndNoSlivers) {
   EXPECT_GE(shortest, 1e-3 * tau) << "a sliver far below the tolerance";
 }
 
-// segment.feature and segment.fuzzy judge parts by the strips the refinement makes with
-// cut.harmonic's defaults (nodes/segment/strip_estimate.cpp, through RejectedCutOptions):
-// the node's defaults must be those of the library.
-TEST(Approximation, CutNodeDefaultsAreTheLibraryDefaults) {
-  const NodeSpec* spec = builtin_registry().find("cut.harmonic");
-  ASSERT_NE(spec, nullptr);
-  std::map<std::string, std::string> defaults;
-  for (const ParamSpec& param : spec->params) defaults[param.name] = param.default_value;
-  const RejectedCutOptions library;
-  auto number = [&](const std::string& name) { return std::stod(defaults.at(name)); };
-  EXPECT_EQ(number("snap_fraction"), library.cut.cut.snap_fraction);
-  EXPECT_EQ(number("snap_tolerance"), library.snap_tolerance);
-  EXPECT_EQ(defaults.at("positive_weights") == "true", library.cut.harmonic.clamp_negative_weights);
-  EXPECT_EQ(number("margin"), library.cut.margin);
-  EXPECT_EQ(number("min_piece_fraction"), library.cut.min_piece_fraction);
-  EXPECT_EQ(number("search_steps"), library.search_steps);
-  EXPECT_EQ(number("search_max_faces"), library.search_max_faces);
-  EXPECT_EQ(number("search_min_fraction"), library.search_min_fraction);
+// segment.feature and segment.fuzzy judge parts by the strips the refinement makes with the
+// options of the configured select, ruled, hausdorff and cut nodes (NodeContext::refine).
+TEST(Approximation, TheConfiguredRefinementReachesTheEngine) {
+  const Registry& registry = builtin_registry();
+  const Pipeline defaults(parse_pipeline_config(default_config_text(), "default.yaml", registry),
+                          registry);
+  const RefineOptions engine;
+  const RefineOptions configured = defaults.refine_options();
+  EXPECT_EQ(configured.cut.search_steps, engine.cut.search_steps);
+  EXPECT_EQ(configured.cut.cut.cut.snap_fraction, engine.cut.cut.cut.snap_fraction);
+  EXPECT_EQ(configured.cut.cut.harmonic.clamp_negative_weights,
+            engine.cut.cut.harmonic.clamp_negative_weights);
+  EXPECT_EQ(configured.decide.bounded.precision, engine.decide.bounded.precision);
+  EXPECT_EQ(configured.max_depth, engine.max_depth);
+  EXPECT_FALSE(configured.select.exhaustive);
+  EXPECT_FALSE(configured.decide.sampled);
+
+  const Pipeline tuned(parse_pipeline_config(R"(
+nodes:
+  load:      {impl: load.openmesh,     to: [segment]}
+  segment:   {impl: segment.feature,   to: [select]}
+  select:    {impl: select.exhaustive, params: {precision: 0.1}, to: [ruled]}
+  ruled:     {impl: ruled.twist_dp,    params: {ruling_length_weight: 0.001}, to: [hausdorff]}
+  hausdorff: {impl: hausdorff.sampled, params: {face_samples: 5000}, to: {accept: [unfold], reject: [cut]}}
+  cut:       {impl: cut.harmonic,      params: {search_steps: 2, max_depth: 9}, back: [select]}
+  unfold:    {impl: unfold.sequential, to: [merge]}
+  merge:     {impl: merge.none}
+)",
+                                             "tuned.yaml", registry),
+                       registry);
+  const RefineOptions options = tuned.refine_options();
+  EXPECT_TRUE(options.select.exhaustive);
+  EXPECT_EQ(options.select.precision, 0.1);
+  EXPECT_EQ(options.twist.ruling_length_weight, 0.001);
+  EXPECT_TRUE(options.decide.sampled);
+  EXPECT_EQ(options.decide.sampling.face_samples, 5000u);
+  EXPECT_EQ(options.cut.search_steps, 2);
+  EXPECT_EQ(options.max_depth, 9);
 }
 
 TEST(Approximation, ToleranceBelowResolutionEndsWithAMessage) {

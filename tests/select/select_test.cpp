@@ -9,7 +9,7 @@
 
 #include "core/errors.h"
 #include "core/mesh.h"
-#include "nodes/select/exhaustive.h"
+#include "nodes/refine/exhaustive_select.h"
 #include "nodes/select/geodesic.h"
 
 namespace papercraft {

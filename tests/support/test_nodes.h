@@ -1,8 +1,13 @@
 #pragma once
-// Small test-only node implementations (not part of the product) for builder tests.
+// Small test-only node implementations (not part of the product) for builder tests. The
+// sinks tally what they see per model index (`tally`), since the product's model record has
+// no fields for test items.
 
 #include <atomic>
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <string>
 
 #include "graph/pipeline.h"
 #include "graph/registry.h"
@@ -20,111 +25,152 @@ struct Summary {
   long sum = 0;
 };
 
-/// Counts how often the sink saw each model (index -> count), to prove completion fires once.
+/// Counts how often the sink saw any model, to prove completion fires once.
 inline std::atomic<int> sink_calls{0};
+
+/// Values the sinks add up per model index and key ("items", "sum", "count", "sink_calls").
+class Tally {
+ public:
+  void add(int model, const std::string& key, long value) {
+    std::lock_guard lock(mutex_);
+    values_[model][key] += value;
+  }
+  /// 0 when nothing was added.
+  long get(int model, const std::string& key) const {
+    std::lock_guard lock(mutex_);
+    auto it = values_.find(model);
+    if (it == values_.end()) return 0;
+    auto value = it->second.find(key);
+    return value == it->second.end() ? 0 : value->second;
+  }
+  bool has(int model, const std::string& key) const {
+    std::lock_guard lock(mutex_);
+    auto it = values_.find(model);
+    return it != values_.end() && it->second.count(key) > 0;
+  }
+  void clear() {
+    std::lock_guard lock(mutex_);
+    values_.clear();
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<int, std::map<std::string, long>> values_;
+};
+
+inline Tally tally;
+
+inline NodeSpec test_spec(std::string name, std::string summary, MessageType input,
+                          std::vector<OutputPort> outputs,
+                          std::function<std::unique_ptr<NodeBody>(const Params&)> create,
+                          std::vector<ParamSpec> params = {}, bool gathers = false) {
+  return {.name = std::move(name),
+          .summary = std::move(summary),
+          .input = std::move(input),
+          .gathers = gathers,
+          .outputs = std::move(outputs),
+          .params = std::move(params),
+          .create = [create](const Params& p, const NodeContext&) { return create(p); }};
+}
 
 inline Registry test_registry() {
   Registry r;
-  r.add({"test.source",
-         "emits `count` items 1..count",
-         MessageType::of<Job>(),
-         false,
-         {{"out", MessageType::of<Item>()}},
-         {{"count", ParamType::Integer, "3", "items per model"},
-          {"fail_every", ParamType::Integer, "0", "throw for model index % fail_every == 1"}},
-         [](const Params& p) {
-           const long count = p.integer("count");
-           const long fail_every = p.integer("fail_every");
-           return make_body([count, fail_every](const Envelope& in, Emitter& out) {
-             if (fail_every > 0 && in.model->index % fail_every == 1) {
-               throw std::runtime_error("bad model " + std::to_string(in.model->index));
-             }
-             for (int i = 1; i <= count; ++i) out.emit(0, Item{i});
-           });
-         }});
-  r.add({"test.double",
-         "doubles the value",
-         MessageType::of<Item>(),
-         false,
-         {{"out", MessageType::of<Item>()}},
-         {},
-         [](const Params&) {
-           return make_body([](const Envelope& in, Emitter& out) {
-             out.emit(0, Item{2 * in.get<Item>().value});
-           });
-         }});
-  r.add({"test.loop",
-         "splits an item in two until it reaches `limit`",
-         MessageType::of<Item>(),
-         false,
-         {{"done", MessageType::of<Item>()}, {"again", MessageType::of<Item>()}},
-         {{"limit", ParamType::Integer, "16", "values >= limit leave the loop"}},
-         [](const Params& p) {
-           const long limit = p.integer("limit");
-           return make_body([limit](const Envelope& in, Emitter& out) {
-             const int v = in.get<Item>().value;
-             if (v >= limit) {
-               out.emit(0, Item{v});
-             } else {
-               out.emit(1, Item{v + 1});
-               out.emit(1, Item{v + 1});
-             }
-           });
-         }});
-  r.add({"test.even",
-         "routes even values to 'even', odd to 'odd'",
-         MessageType::of<Item>(),
-         false,
-         {{"even", MessageType::of<Item>()}, {"odd", MessageType::of<Item>()}},
-         {},
-         [](const Params&) {
-           return make_body([](const Envelope& in, Emitter& out) {
-             const int v = in.get<Item>().value;
-             out.emit(v % 2 == 0 ? 0 : 1, Item{v});
-           });
-         }});
-  r.add({"test.collect",
-         "sums all items of a model",
-         MessageType::of<Item>(),
-         true,
-         {{"out", MessageType::of<Summary>()}},
-         {},
-         [](const Params&) {
-           return make_body([](const Envelope& in, Emitter& out) {
-             Summary s;
-             for (const auto& item : in.get<Gathered>().as<Item>()) {
-               s.count++;
-               s.sum += item->value;
-             }
-             out.emit(0, s);
-           });
-         }});
-  r.add({"test.sink",
-         "records the summary in the model's results",
-         MessageType::of<Summary>(),
-         false,
-         {},
-         {},
-         [](const Params&) {
-           return make_body([](const Envelope& in, Emitter&) {
-             sink_calls.fetch_add(1);
-             in.model->add_result("sink_calls", 1);
-             in.model->set_result("count", static_cast<double>(in.get<Summary>().count));
-             in.model->set_result("sum", static_cast<double>(in.get<Summary>().sum));
-           });
-         }});
-  r.add({"test.item_sink",
-         "adds item values to the model's results",
-         MessageType::of<Item>(),
-         false,
-         {},
-         {},
-         [](const Params&) {
-           return make_body([](const Envelope& in, Emitter&) {
-             in.model->add_result("items", 1);
-             in.model->add_result("sum", in.get<Item>().value);
-           });
-         }});
+  r.add(test_spec(
+      "test.source", "emits `count` items 1..count", MessageType::of<Job>(),
+      {{"out", MessageType::of<Item>()}},
+      [](const Params& p) {
+        const long count = p.integer("count");
+        const long fail_every = p.integer("fail_every");
+        return make_body([count, fail_every](const Envelope& in, Emitter& out) {
+          if (fail_every > 0 && in.model->index % fail_every == 1) {
+            throw std::runtime_error("bad model " + std::to_string(in.model->index));
+          }
+          for (int i = 1; i <= count; ++i) out.emit("out", Item{i});
+        });
+      },
+      {{"count", ParamType::Integer, "3", "items per model"},
+       {"fail_every", ParamType::Integer, "0", "throw for model index % fail_every == 1"}}));
+  r.add(test_spec("test.double", "doubles the value", MessageType::of<Item>(),
+                  {{"out", MessageType::of<Item>()}}, [](const Params&) {
+                    return make_body([](const Envelope& in, Emitter& out) {
+                      out.emit("out", Item{2 * in.get<Item>().value});
+                    });
+                  }));
+  r.add(test_spec(
+      "test.loop", "splits an item in two until it reaches `limit`", MessageType::of<Item>(),
+      {{"done", MessageType::of<Item>()}, {"again", MessageType::of<Item>()}},
+      [](const Params& p) {
+        const long limit = p.integer("limit");
+        return make_body([limit](const Envelope& in, Emitter& out) {
+          const int v = in.get<Item>().value;
+          if (v >= limit) {
+            out.emit("done", Item{v});
+          } else {
+            out.emit("again", Item{v + 1});
+            out.emit("again", Item{v + 1});
+          }
+        });
+      },
+      {{"limit", ParamType::Integer, "16", "values >= limit leave the loop"}}));
+  r.add(test_spec("test.even", "routes even values to 'even', odd to 'odd'",
+                  MessageType::of<Item>(),
+                  {{"even", MessageType::of<Item>()}, {"odd", MessageType::of<Item>()}},
+                  [](const Params&) {
+                    return make_body([](const Envelope& in, Emitter& out) {
+                      const int v = in.get<Item>().value;
+                      out.emit(v % 2 == 0 ? "even" : "odd", Item{v});
+                    });
+                  }));
+  r.add(test_spec("test.mod3", "routes values by remainder: 'zero', 'one', 'two'",
+                  MessageType::of<Item>(),
+                  {{"zero", MessageType::of<Item>()},
+                   {"one", MessageType::of<Item>()},
+                   {"two", MessageType::of<Item>()}},
+                  [](const Params&) {
+                    return make_body([](const Envelope& in, Emitter& out) {
+                      static const char* const kPorts[] = {"zero", "one", "two"};
+                      const int v = in.get<Item>().value;
+                      out.emit(kPorts[v % 3], Item{v});
+                    });
+                  }));
+  r.add(test_spec("test.rogue", "emits on a port it does not declare (a framework bug)",
+                  MessageType::of<Item>(), {{"out", MessageType::of<Item>()}},
+                  [](const Params&) {
+                    return make_body([](const Envelope& in, Emitter& out) {
+                      out.emit("undeclared", Item{in.get<Item>().value});
+                    });
+                  }));
+  r.add(test_spec(
+      "test.collect", "sums all items of a model", MessageType::of<Item>(),
+      {{"out", MessageType::of<Summary>()}},
+      [](const Params&) {
+        return make_body([](const Envelope& in, Emitter& out) {
+          Summary s;
+          for (const auto& item : in.get<Gathered>().as<Item>()) {
+            s.count++;
+            s.sum += item->value;
+          }
+          out.emit("out", s);
+        });
+      },
+      {}, /*gathers=*/true));
+  r.add(test_spec("test.sink", "tallies the summary", MessageType::of<Summary>(), {},
+                  [](const Params&) {
+                    return make_body([](const Envelope& in, Emitter&) {
+                      sink_calls.fetch_add(1);
+                      const int model = in.model->index;
+                      tally.add(model, "sink_calls", 1);
+                      tally.add(model, "count", in.get<Summary>().count);
+                      tally.add(model, "sum", in.get<Summary>().sum);
+                    });
+                  }));
+  r.add(test_spec("test.item_sink", "tallies item values", MessageType::of<Item>(), {},
+                  [](const Params&) {
+                    return make_body([](const Envelope& in, Emitter&) {
+                      tally.add(in.model->index, "items", 1);
+                      tally.add(in.model->index, "sum", in.get<Item>().value);
+                    });
+                  }));
   return r;
 }
 

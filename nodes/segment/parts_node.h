@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
-#include "core/atomic_file.h"
 #include "graph/node.h"
 #include "nodes/segment/parts_ply.h"
 
@@ -22,13 +22,14 @@ inline void emit_parts(const Envelope& in, Emitter& out, std::vector<Mesh> parts
     std::filesystem::create_directories(dir);
     write_file_atomic(dir / "parts.ply", parts_ply(parts));
   }
-  in.model->set_result("segments", static_cast<double>(parts.size()));
+  const int count = static_cast<int>(parts.size());
+  in.model->update([count](ModelRecord& record) { record.segments = count; });
   for (std::size_t i = 0; i < parts.size(); ++i) {
     Part part;
     part.mesh = std::make_shared<const Mesh>(std::move(parts[i]));
     part.path = std::to_string(i);
     part.model = model;
-    out.emit(0, std::move(part));
+    out.emit("out", std::move(part));
   }
 }
 

@@ -1,13 +1,14 @@
-#include "nodes/cut/rejected.h"
+#include "nodes/refine/rejected_cut.h"
 
-#include "nodes/cut/maximal_strip.h"
+#include "nodes/refine/maximal_strip.h"
 
 namespace papercraft {
 
 WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
-                             const RejectedCutOptions& options) {
+                             const RejectedCutOptions& options, const TwistOptions& twist,
+                             const DecideOptions& decide) {
   WitnessCutOptions cut_options = options.cut;
   cut_options.cut.snap_distance = options.snap_tolerance * tolerance;
   const bool search = hole == nullptr && options.search_steps > 0 &&
@@ -17,6 +18,8 @@ WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bo
     settings.cut = cut_options;
     settings.steps = options.search_steps;
     settings.min_strip_fraction = min_strip_fraction;
+    settings.twist = twist;
+    settings.decide = decide;
     return cut_maximal_strip(part, first, first_closed, second, second_closed, tolerance,
                              settings);
   };

@@ -12,7 +12,7 @@
 
 #include "core/mesh.h"
 #include "nodes/cut/through_witness.h"
-#include "nodes/hausdorff/bounded.h"
+#include "nodes/refine/decide.h"
 #include "nodes/ruled/twist_dp.h"
 
 namespace papercraft {
@@ -20,7 +20,7 @@ namespace papercraft {
 struct MaximalStripOptions {
   WitnessCutOptions cut;
   TwistOptions twist;
-  BoundedHausdorffOptions hausdorff;
+  DecideOptions decide;
   int steps = 4;  // bisection steps per side
   // A piece below this fraction of the part's area is not worth a strip of its own: peeling
   // thin layers off the side that already fits, while the error sits at the other end, only

@@ -1,13 +1,13 @@
 #pragma once
 // The exhaustive boundary selection of the paper (section 3.2.1): build the strip for every
 // candidate pair (geodesic.h, candidate_selections) and keep the pair with the lowest
-// certified Hausdorff error. Locally optimal and slower than select_geodesic: one strip and
+// Hausdorff error (certified, or sampled when the refinement decides by sampling). Locally optimal and slower than select_geodesic: one strip and
 // one Hausdorff distance per pair, evaluated in parallel.
 
 #include <vector>
 
 #include "core/mesh.h"
-#include "nodes/hausdorff/bounded.h"
+#include "nodes/refine/decide.h"
 #include "nodes/ruled/twist_dp.h"
 #include "nodes/select/geodesic.h"
 
@@ -18,7 +18,7 @@ struct ExhaustiveSelectOptions {
   /// (model units). 0: 1% of the part's bounding-box diagonal.
   double error_bound = 0.0;
   TwistOptions twist;
-  BoundedHausdorffOptions hausdorff;
+  DecideOptions decide;
 };
 
 /// A candidate selection with the certified bounds of H(part, strip).

@@ -8,7 +8,7 @@
 
 namespace papercraft {
 
-/// The report of `model`; `strips` may be null (then input facts come from nowhere).
-nlohmann::json model_report(const ModelRun& model, const ModelStrips* strips);
+/// The report of `model`, from its record (a failed model has only what it reached).
+nlohmann::json model_report(const ModelRun& model);
 
 }  // namespace papercraft

@@ -1,4 +1,4 @@
-#include "nodes/cut/maximal_strip.h"
+#include "nodes/refine/maximal_strip.h"
 
 #include <gtest/gtest.h>
 

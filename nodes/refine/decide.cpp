@@ -1,13 +1,17 @@
-#include "nodes/hausdorff/decision.h"
+#include "nodes/refine/decide.h"
 
 #include "core/bvh.h"
 
 namespace papercraft {
 
-StripVerdict judge_strip(
-    const Mesh& part, const RuledStrip& strip, int hole_count, double tolerance,
-    const std::function<HausdorffResult(const TriangleMesh&, const TriangleMesh&, double)>&
-        decide) {
+HausdorffResult decide_within(const TriangleMesh& part, const TriangleMesh& strip, double tau,
+                              const DecideOptions& options) {
+  return options.sampled ? sampled_hausdorff_within(part, strip, tau, options.sampling)
+                         : certified_hausdorff_within(part, strip, tau, options.bounded);
+}
+
+StripVerdict judge_strip(const Mesh& part, const RuledStrip& strip, int hole_count,
+                          double tolerance, const DecideOptions& options) {
   StripVerdict verdict;
   if (hole_count > 0) {
     // Holes are split off regardless of the error (paper 3.2.2): a strip between two
@@ -30,7 +34,7 @@ StripVerdict judge_strip(
     }
     return verdict;
   }
-  const HausdorffResult result = decide(part_mesh, strip.mesh, tolerance);
+  const HausdorffResult result = decide_within(part_mesh, strip.mesh, tolerance, options);
   verdict.certified = result.certified;
   if (!result.within) {
     verdict.witness = result.witness.point;

@@ -1,4 +1,4 @@
-#include "nodes/cut/maximal_strip.h"
+#include "nodes/refine/maximal_strip.h"
 
 #include <tbb/parallel_invoke.h>
 
@@ -64,8 +64,8 @@ Probe probe(const Mesh& part, const std::vector<Mesh>& pieces, const std::vector
                                ? twist_minimizing_strip(side_polyline, cut_polyline, options.twist)
                                : twist_minimizing_strip(cut_polyline, side_polyline, options.twist);
   if (strip.mesh.empty()) return {};
-  const HausdorffResult result = certified_hausdorff_within(to_triangle_mesh(*piece), strip.mesh,
-                                                            tolerance, options.hausdorff);
+  const HausdorffResult result =
+      decide_within(to_triangle_mesh(*piece), strip.mesh, tolerance, options.decide);
   return {result.within, surface_area(*piece)};
 }
 
@@ -84,7 +84,7 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
   const double area = surface_area(part);
   // The two sides are independent searches: run them side by side.
   MaximalStripOptions probe_options = options;
-  probe_options.hausdorff.locate_maximum = false;  // a probe needs the decision only
+  probe_options.decide.bounded.locate_maximum = false;  // a probe needs the decision only
   struct Side {
     WitnessCut cut;
     double area = 0.0;

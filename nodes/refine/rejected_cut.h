@@ -1,6 +1,5 @@
 #pragma once
-// The whole decision of cut.harmonic for one rejected part, shared by the node and by the
-// segment stage's strip estimate (which must refine exactly as the pipeline does):
+// Where the refinement cuts a rejected part (the engine's cut step, refine.h):
 //   1. on parts of up to `search_max_faces` faces, the maximal-strip search (the largest
 //      piece next to a boundary that one strip covers, if it is at least
 //      `search_min_fraction` of the part);
@@ -12,6 +11,8 @@
 
 #include "core/mesh.h"
 #include "nodes/cut/through_witness.h"
+#include "nodes/refine/decide.h"
+#include "nodes/ruled/twist_dp.h"
 
 namespace papercraft {
 
@@ -27,10 +28,12 @@ struct RejectedCutOptions {
 /// Cuts a part whose strip between `first` and `second` (vertex indices, as in
 /// harmonic_field) was rejected at `tolerance`, with its worst point at `witness`, or, when
 /// `hole` is non-null, because of that unused boundary loop. Returns no pieces when no cut
-/// makes progress.
+/// makes progress. The maximal-strip search builds and decides its probes with `twist` and
+/// `decide`, as the refinement does.
 WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
-                             const RejectedCutOptions& options = {});
+                             const RejectedCutOptions& options, const TwistOptions& twist,
+                             const DecideOptions& decide);
 
 }  // namespace papercraft

@@ -1,4 +1,4 @@
-#include "nodes/select/exhaustive.h"
+#include "nodes/refine/exhaustive_select.h"
 
 #include <tbb/parallel_for.h>
 
@@ -38,9 +38,14 @@ std::vector<ScoredSelection> score(const Mesh& part, std::vector<BoundarySelecti
     RuledStrip strip = twist_minimizing_strip(
         selection_polyline(part, selection.first, selection.first_closed),
         selection_polyline(part, selection.second, selection.second_closed), options.twist);
-    const TriangleBvh strip_tree(std::move(strip.mesh));
-    const HausdorffResult result =
-        certified_hausdorff_distance(part_tree, strip_tree, error_bound, options.hausdorff);
+    HausdorffResult result;
+    if (options.decide.sampled) {
+      result = sampled_hausdorff_distance(part_tree.mesh(), strip.mesh, options.decide.sampling);
+    } else {
+      const TriangleBvh strip_tree(std::move(strip.mesh));
+      result = certified_hausdorff_distance(part_tree, strip_tree, error_bound,
+                                            options.decide.bounded);
+    }
     scores[k] = {std::move(selection), result.lower, result.upper, result.certified};
   });
   return scores;

@@ -1,0 +1,54 @@
+#pragma once
+// What one model produced, as typed fields: report.json, batch.json and the command's
+// summary line read this record; each field names the stage that fills it.
+
+#include <string>
+#include <vector>
+
+#include "core/triangle_mesh.h"
+
+namespace papercraft {
+
+/// Facts about the input mesh, for report.json.
+struct MeshSummary {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  Vec3 box_min = Vec3::Zero();
+  Vec3 box_max = Vec3::Zero();
+  double largest_side = 0.0;
+  int boundary_loops = 0;
+  int components = 0;
+  int euler_characteristic = 0;
+  bool has_uvs = false;
+};
+
+struct ModelRecord {
+  /// The framework, when the loader emits the model: the input and the absolute tolerance
+  /// (from the run's tolerance and the input's largest side).
+  bool loaded = false;
+  MeshSummary input;
+  double tolerance = 0.0;
+
+  int segments = 0;  // segment: parts emitted
+  long cuts = 0;     // cut: rejected parts cut
+
+  /// merge: the model's strips.
+  int strips_3d = 0;
+  int flat_strips_before_merge = 0;
+  int flat_strips = 0;
+  double hausdorff_bound = 0.0;  // the largest upper bound over the 3D strips
+  bool certified = false;        // every strip's bound certified (none sampled)
+
+  /// layout: the pages.
+  int pages = 0;
+  int shelf_pages = 0;
+  double mm_per_unit = 0.0;
+
+  /// export: the largest distance of an input vertex to the approximation (error.ply).
+  double max_vertex_distance = 0.0;
+
+  /// Repairs made by the loader, warnings of any stage (report.json "notes").
+  std::vector<std::string> notes;
+};
+
+}  // namespace papercraft

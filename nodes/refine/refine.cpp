@@ -1,0 +1,156 @@
+#include "nodes/refine/refine.h"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <exception>
+#include <sstream>
+#include <utility>
+
+#include "core/errors.h"
+#include "nodes/refine/exhaustive_select.h"
+
+namespace papercraft {
+
+StripBoundaries select_strip_boundaries(const Mesh& part, double tolerance,
+                                        const RefineOptions& options) {
+  BoundarySelection selection;
+  if (options.select.exhaustive) {
+    ExhaustiveSelectOptions exhaustive;
+    exhaustive.error_bound = options.select.precision * tolerance;
+    exhaustive.twist = options.twist;
+    exhaustive.decide = options.decide;
+    selection = select_exhaustive(part, exhaustive);
+  } else {
+    selection = select_geodesic(part, options.select.geodesic);
+  }
+  StripBoundaries boundaries;
+  boundaries.first = std::move(selection.first);
+  boundaries.second = std::move(selection.second);
+  boundaries.first_closed = selection.first_closed;
+  boundaries.second_closed = selection.second_closed;
+  boundaries.a = selection_polyline(part, boundaries.first, boundaries.first_closed);
+  boundaries.b = selection_polyline(part, boundaries.second, boundaries.second_closed);
+  auto used = [&](const std::vector<int>& loop) {
+    auto chosen = [&](const std::vector<int>& side, bool closed) {
+      return closed && std::find(side.begin(), side.end(), loop.front()) != side.end();
+    };
+    return chosen(boundaries.first, boundaries.first_closed) ||
+           chosen(boundaries.second, boundaries.second_closed);
+  };
+  for (auto& loop : boundary_loops(part)) {
+    if (!used(loop)) boundaries.holes.push_back(std::move(loop));
+  }
+  return boundaries;
+}
+
+RuledStrip build_strip(const StripBoundaries& boundaries, const RefineOptions& options) {
+  return twist_minimizing_strip(boundaries.a, boundaries.b, options.twist);
+}
+
+StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
+                          const RuledStrip& strip, double tolerance, const RefineOptions& options) {
+  return judge_strip(part, strip, static_cast<int>(boundaries.holes.size()), tolerance,
+                     options.decide);
+}
+
+std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,
+                                     const StripVerdict& verdict, int depth, double tolerance,
+                                     const RefineOptions& options,
+                                     const std::string& part_name) {
+  auto fail = [&](const std::string& why) {
+    std::ostringstream message;
+    message << "part " << part_name << " (" << part.n_faces()
+            << " faces) cannot be approximated within the tolerance " << tolerance << ": " << why
+            << "; worst error " << verdict.witness_error << " at (" << verdict.witness.x() << ", "
+            << verdict.witness.y() << ", " << verdict.witness.z()
+            << "). The tolerance may be below the mesh's resolution: try a larger --tolerance.";
+    throw ApproximationException(message.str());
+  };
+  if (depth >= options.max_depth) {
+    fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
+  }
+  const std::vector<int>* hole = verdict.hole >= 0 ? &boundaries.holes[verdict.hole] : nullptr;
+  WitnessCut cut = cut_rejected_part(part, boundaries.first, boundaries.first_closed,
+                                     boundaries.second, boundaries.second_closed, hole,
+                                     verdict.witness, tolerance, options.cut, options.twist,
+                                     options.decide);
+  spdlog::debug("cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {}",
+                part_name, part.n_faces(), boundaries.holes.size(), verdict.hole,
+                verdict.witness_error, cut.across ? "g" : "f", cut.value, cut.pieces.size());
+  if (cut.pieces.empty()) fail("no iso-line through the worst point splits it");
+  return std::move(cut.pieces);
+}
+
+namespace {
+
+struct Pending {
+  Mesh piece;
+  std::string path;
+  int depth = 0;
+};
+
+// Depth first through the refinement of `root`. `accept(pending, boundaries, strip, verdict)`
+// takes each accepted strip and returns false to stop; `room(pending_count)` is asked after
+// each cut and returns false to stop. Returns false when stopped.
+template <class Accept, class Room>
+bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions& options,
+                        Accept accept, Room room) {
+  std::vector<Pending> stack;
+  stack.push_back({root, "", 0});
+  while (!stack.empty()) {
+    Pending item = std::move(stack.back());
+    stack.pop_back();
+    StripBoundaries boundaries = select_strip_boundaries(item.piece, tolerance, options);
+    RuledStrip strip = build_strip(boundaries, options);
+    StripVerdict verdict = decide_strip(item.piece, boundaries, strip, tolerance, options);
+    if (verdict.accept) {
+      if (!accept(std::move(item), std::move(boundaries), std::move(strip), verdict)) return false;
+      continue;
+    }
+    std::vector<Mesh> pieces =
+        cut_rejected_piece(item.piece, boundaries, verdict, item.depth, tolerance, options,
+                           item.path.empty() ? "(whole)" : item.path);
+    if (!room(stack.size() + pieces.size())) return false;
+    // Pushed last first, so the pieces are refined in cut order.
+    for (std::size_t i = pieces.size(); i-- > 0;) {
+      stack.push_back({std::move(pieces[i]), item.path + "." + std::to_string(i), item.depth + 1});
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<RefinedStrip> refine_part(const Mesh& part, double tolerance,
+                                      const RefineOptions& options) {
+  std::vector<RefinedStrip> strips;
+  refine_depth_first(
+      part, tolerance, options,
+      [&](Pending&& item, StripBoundaries&& boundaries, RuledStrip&& strip,
+          const StripVerdict& verdict) {
+        strips.push_back({std::move(item.piece), std::move(item.path), item.depth,
+                          std::move(boundaries), std::move(strip), verdict});
+        return true;
+      },
+      [](std::size_t) { return true; });
+  return strips;
+}
+
+int count_strips(const Mesh& part, double tolerance, const RefineOptions& options, int cap) {
+  int strips = 0;
+  try {
+    const bool finished = refine_depth_first(
+        part, tolerance, options,
+        [&](Pending&&, StripBoundaries&&, RuledStrip&&, const StripVerdict&) {
+          return ++strips <= cap;
+        },
+        // Every piece still to refine makes at least one strip.
+        [&](std::size_t pending) { return strips + static_cast<long>(pending) <= cap; });
+    return finished ? strips : cap + 1;
+  } catch (const std::exception&) {
+    return cap + 1;
+  }
+}
+
+}  // namespace papercraft
