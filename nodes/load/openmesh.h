@@ -8,13 +8,14 @@
 // index), a NaN in an STL is welded onto an arbitrary vertex, a header that claims 4e9 vertices
 // makes the reader loop 4e9 times, a comment right before a binary PLY's end_header shifts the
 // data by one byte. So a file goes through three steps:
-//   1. a pre-scan here: header counts against the file size (fails fast on absurd counts, before
-//      anything is allocated), every ascii record parsed once (non-finite numbers, truncation,
-//      more data than declared), binary records walked (truncation), header layouts OpenMesh
-//      misreads refused;
-//   2. OpenMesh's reader fills a recording importer that keeps the raw vertex positions, face
-//      index lists and texture coordinates, dropping nothing;
-//   3. the raw data is validated and repaired here, and the `Mesh` is built with add_face.
+//   1. a pre-scan (prescan.h): header counts against the file size (fails fast on absurd counts,
+//      before anything is allocated), every ascii record parsed once (non-finite numbers,
+//      truncation, more data than declared), binary records walked (truncation), header layouts
+//      OpenMesh misreads refused;
+//   2. OpenMesh's reader fills a recording importer (recording_importer.h) that keeps the raw
+//      vertex positions, face index lists and texture coordinates, dropping nothing;
+//   3. the raw data is triangulated (triangulate.h), validated and repaired (repair.h), and the
+//      `Mesh` is built with add_face.
 // OpenMesh's reader objects are process-wide singletons with per-file state, so step 2 is
 // serialised by a mutex; steps 1 and 3 run concurrently for different files.
 //

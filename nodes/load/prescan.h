@@ -1,0 +1,58 @@
+#pragma once
+// Step 1 of loading, the pre-scan: what a file must contain, checked before OpenMesh's reader
+// sees it (see openmesh.h for why); one prescan_* per format, in prescan_<format>.cpp.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "nodes/load/file_scanner.h"
+#include "nodes/load/openmesh.h"
+
+namespace papercraft::load_internal {
+
+/// The formats load_mesh reads, chosen by the file's extension.
+enum class Format { obj, off, ply, stl };
+
+/// What the pre-scan found: the records OpenMesh's reader must report, and what the later steps
+/// need to know about the file.
+struct Prescan {
+  Format format = Format::obj;
+  // Records OpenMesh must report (for an STL, `vertices` is 3 per triangle before welding).
+  std::uint64_t vertices = 0;
+  std::uint64_t faces = 0;
+  std::uint64_t corners = 0;
+  std::filesystem::path material_library;  // OBJ mtllib, resolved against the OBJ's folder
+  std::string ply_texture;                 // PLY "comment TextureFile <name>"
+  bool off_comments = false;               // an ascii OFF with '#' comments
+  std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
+};
+
+/// Throws InvalidInputException when `faces` is over options.max_faces or `vertices` more than
+/// OpenMesh can index.
+void check_counts(const std::string& file, std::uint64_t vertices, std::uint64_t faces,
+                  const LoadOptions& options);
+/// Throws InvalidInputException when the records a header declares (`what`) need more bytes than
+/// are `available` after it.
+void check_room(const std::string& file, const std::string& what, std::uint64_t needed,
+                std::uint64_t available);
+/// Throws InvalidInputException when the file has no faces.
+void check_some_faces(const std::string& file, const Prescan& scan);
+
+// Each pre-scan reads the file once from the start and throws InvalidInputException (message
+// starting with `file`) for what OpenMesh's reader would misread, drop or refuse; an IOException
+// comes from the scanner.
+
+/// OBJ: every v, vt and f line parsed; faces OpenMesh would drop or shrink refused; the first
+/// mtllib resolved against `path`'s folder.
+Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesystem::path& path,
+                    const LoadOptions& options);
+/// OFF, ascii or "OFF BINARY": the header, the counts against the file size, every record.
+Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options);
+/// PLY, ascii or binary: the header (layouts OpenMesh misreads refused), the counts against the
+/// file size, the records of every element up to the faces.
+Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options);
+/// STL, binary when the size is 84 + 50 * triangles, else ascii: every triangle's corners.
+Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions& options);
+
+}  // namespace papercraft::load_internal

@@ -1,0 +1,394 @@
+// The pre-scan of a PLY file, ascii or binary of either endianness.
+
+#include <algorithm>
+#include <cstdint>
+#include <initializer_list>
+#include <string_view>
+#include <vector>
+
+#include "nodes/load/messages.h"
+#include "nodes/load/parse_values.h"
+#include "nodes/load/prescan.h"
+
+namespace papercraft::load_internal {
+namespace {
+
+constexpr std::size_t kMaxPlyHeaderLines = 100'000;
+
+struct PlyType {
+  std::string_view name;
+  int bytes;
+  bool is_float;
+  bool is_signed;
+};
+
+constexpr PlyType kPlyTypes[] = {
+    {"char", 1, false, true},    {"int8", 1, false, true},    {"uchar", 1, false, false},
+    {"uint8", 1, false, false},  {"short", 2, false, true},   {"int16", 2, false, true},
+    {"ushort", 2, false, false}, {"uint16", 2, false, false}, {"int", 4, false, true},
+    {"int32", 4, false, true},   {"uint", 4, false, false},   {"uint32", 4, false, false},
+    {"float", 4, true, true},    {"float32", 4, true, true},  {"double", 8, true, true},
+    {"float64", 8, true, true},
+};
+
+const PlyType* find_ply_type(std::string_view name) {
+  for (const PlyType& type : kPlyTypes) {
+    if (type.name == name) return &type;
+  }
+  return nullptr;
+}
+
+// How OpenMesh's ascii PLY reader consumes a value: as a float, as an int, or as a string.
+enum class PlyReading { as_float, as_integer, as_token };
+
+struct PlyProperty {
+  std::string name;
+  const PlyType* type = nullptr;  // the list entries' type for a list
+  const PlyType* count_type = nullptr;
+  bool is_list = false;
+  bool is_vertex_indices = false;
+  bool is_coordinate = false;
+  PlyReading reading = PlyReading::as_token;
+};
+
+struct PlyElement {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+bool is_one_of(std::string_view name, std::initializer_list<std::string_view> names) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}  // namespace
+
+Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options) {
+  Prescan scan;
+  scan.format = Format::ply;
+  // The header's bytes as read, to find where OpenMesh's reader will look for binary data.
+  std::string header_bytes;
+  std::size_t openmesh_position = 0;  // where OpenMesh's `tellg` is before it reads a keyword
+  std::vector<PlyElement> elements;
+  std::string format;
+  bool big_endian = false;
+  bool ended = false;
+  std::string_view line;
+  while (!ended && in.next_line(line)) {
+    const std::uint64_t number = in.line_number();
+    if (number > kMaxPlyHeaderLines) {
+      throw_invalid(file, "the PLY header has no end_header in its first " +
+                              std::to_string(kMaxPlyHeaderLines) + " lines");
+    }
+    const std::size_t line_start = header_bytes.size();
+    header_bytes.append(line);
+    if (in.last_line_had_carriage_return()) header_bytes.push_back('\r');
+    header_bytes.push_back('\n');
+    const std::string_view content = trim(line);
+    const std::size_t content_end =
+        line_start + static_cast<std::size_t>(content.data() + content.size() - line.data());
+    std::string_view rest = content;
+    const std::string_view keyword = next_token(rest);
+    std::vector<std::string_view> tokens;
+    for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
+      tokens.push_back(token);
+    }
+    const std::string where = at_line(number);
+
+    if (number == 1) {
+      if (content != "ply" && content != "PLY") {
+        throw_invalid(file, "line 1: not a PLY file (the first line must be 'ply')");
+      }
+      continue;
+    }
+    if (number == 2) {
+      // OpenMesh reads the second line as the format whatever it says.
+      if (keyword != "format" || tokens.size() != 2) {
+        throw_invalid(file, where +
+                                "expected 'format <ascii|binary_little_endian|"
+                                "binary_big_endian> 1.0' on the second line, got " +
+                                in_quotes(content));
+      }
+      format = std::string(tokens[0]);
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") {
+        throw_invalid(file, where + "unsupported PLY format " + in_quotes(format));
+      }
+      big_endian = format == "binary_big_endian";
+      openmesh_position = content_end;
+      continue;
+    }
+    if (keyword == "comment") {
+      if (!tokens.empty() && equals_ignoring_case(tokens[0], "TextureFile") &&
+          scan.ply_texture.empty()) {
+        std::string_view name = content;
+        next_token(name);
+        next_token(name);
+        scan.ply_texture = std::string(trim(name));
+      }
+      // OpenMesh skips the rest of a comment line with getline, newline included.
+      openmesh_position = header_bytes.size();
+      continue;
+    }
+    if (keyword == "end_header") {
+      if (!tokens.empty()) throw_invalid(file, where + "unexpected text after end_header");
+      ended = true;
+      if (format != "ascii") {
+        // OpenMesh seeks to 12 (or 14 after "\r\n") bytes past its stream position before the
+        // end_header keyword, which is right only when "\nend_header\n" directly follows the
+        // last token of the header.
+        const bool crlf = openmesh_position + 1 < header_bytes.size() &&
+                          header_bytes[openmesh_position] == '\r' &&
+                          header_bytes[openmesh_position + 1] == '\n';
+        const std::size_t openmesh_data = openmesh_position + (crlf ? 14 : 12);
+        if (openmesh_data != header_bytes.size()) {
+          throw_invalid(file, where +
+                                  "OpenMesh's reader would misplace the binary data: remove the "
+                                  "comment, blank line or spaces directly before end_header, and "
+                                  "any spaces around it");
+        }
+      }
+      break;
+    }
+    openmesh_position = content_end;
+    if (keyword == "obj_info") continue;
+    if (keyword == "element") {
+      std::int64_t count = 0;
+      if (tokens.size() != 2 || !parse_integer(tokens[1], count) || count < 0) {
+        throw_invalid(file, where + "expected 'element <name> <count>', got " + in_quotes(content));
+      }
+      if (static_cast<std::uint64_t>(count) > UINT32_MAX) {
+        throw_invalid(file, where + "element " + in_quotes(tokens[0]) + " declares " +
+                                std::to_string(count) +
+                                " records, more than OpenMesh's PLY reader can count");
+      }
+      elements.push_back({std::string(tokens[0]), static_cast<std::uint64_t>(count), {}});
+      continue;
+    }
+    if (keyword == "property") {
+      if (elements.empty()) throw_invalid(file, where + "property before any element");
+      PlyElement& element = elements.back();
+      PlyProperty property;
+      if (!tokens.empty() && tokens[0] == "list") {
+        if (tokens.size() != 4) {
+          throw_invalid(file, where + "expected 'property list <count type> <entry type> <name>'");
+        }
+        property.is_list = true;
+        property.name = std::string(tokens[3]);
+        property.count_type = find_ply_type(tokens[1]);
+        property.type = find_ply_type(tokens[2]);
+        if (property.count_type == nullptr || property.type == nullptr) {
+          throw_invalid(file, where + "unknown type in " + in_quotes(content));
+        }
+        if (!is_one_of(tokens[1], {"uchar", "uint8", "uint16", "int"})) {
+          throw_invalid(file, where + "list count type " + in_quotes(tokens[1]) +
+                                  " is not supported by OpenMesh's PLY reader (use uchar, "
+                                  "uint8, uint16 or int)");
+        }
+        property.is_vertex_indices =
+            element.name == "face" && is_one_of(property.name, {"vertex_indices", "vertex_index"});
+        if (!property.is_vertex_indices) {
+          throw_invalid(file, where + "list property " + in_quotes(property.name) + " of element " +
+                                  in_quotes(element.name) +
+                                  " is not supported (OpenMesh's PLY reader can only read the "
+                                  "face's vertex_indices list)");
+        }
+        if (property.type->is_float) {
+          throw_invalid(file, where + "vertex indices must have an integer type, got " +
+                                  in_quotes(tokens[2]));
+        }
+        property.reading = PlyReading::as_integer;
+      } else {
+        if (tokens.size() != 2) {
+          throw_invalid(file,
+                        where + "expected 'property <type> <name>', got " + in_quotes(content));
+        }
+        property.name = std::string(tokens[1]);
+        property.type = find_ply_type(tokens[0]);
+        if (property.type == nullptr) {
+          throw_invalid(file, where + "unknown property type " + in_quotes(tokens[0]));
+        }
+        const bool is_vertex = element.name == "vertex";
+        const bool is_face = element.name == "face";
+        property.is_coordinate = is_vertex && is_one_of(property.name, {"x", "y", "z"});
+        const bool read_as_float =
+            is_vertex &&
+            is_one_of(property.name, {"x", "y", "z", "nx", "ny", "nz", "u", "v", "s", "t"});
+        const bool is_color =
+            (is_vertex && is_one_of(property.name, {"red", "green", "blue", "alpha", "diffuse_red",
+                                                    "diffuse_green", "diffuse_blue"})) ||
+            (is_face && is_one_of(property.name, {"red", "green", "blue", "alpha"}));
+        const bool single_float = property.type->is_float && property.type->bytes == 4;
+        if (read_as_float) {
+          property.reading = PlyReading::as_float;
+          if (format != "ascii" && !property.type->is_float) {
+            throw_invalid(file, where + "property " + in_quotes(property.name) + " has type " +
+                                    in_quotes(tokens[0]) +
+                                    "; OpenMesh's binary PLY reader needs float or double");
+          }
+        } else if (is_color) {
+          property.reading = single_float ? PlyReading::as_float : PlyReading::as_integer;
+          if (property.type->is_float && !single_float) {
+            throw_invalid(file, where + "color property " + in_quotes(property.name) +
+                                    " of type double is not supported by OpenMesh's PLY reader");
+          }
+        }
+      }
+      element.properties.push_back(std::move(property));
+      continue;
+    }
+    throw_invalid(file, where + "unknown PLY header keyword " + in_quotes(keyword));
+  }
+  if (!ended) {
+    throw_invalid(file, "truncated: the PLY header has no end_header");
+  }
+
+  // Which elements OpenMesh reads: all up to and including the face element.
+  std::size_t face_element = elements.size();
+  const PlyElement* vertex_element = nullptr;
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    if (elements[i].name == "vertex" && vertex_element == nullptr) vertex_element = &elements[i];
+    if (elements[i].name == "face" && face_element == elements.size()) face_element = i;
+  }
+  if (vertex_element == nullptr) throw_invalid(file, "the PLY header has no vertex element");
+  for (std::string_view axis : {"x", "y", "z"}) {
+    const auto& properties = vertex_element->properties;
+    if (std::count_if(properties.begin(), properties.end(),
+                      [&](const PlyProperty& p) { return p.name == axis; }) != 1) {
+      throw_invalid(file, "the PLY vertex element needs exactly one property " + in_quotes(axis));
+    }
+  }
+  scan.vertices = vertex_element->count;
+  if (face_element < elements.size()) {
+    const auto& properties = elements[face_element].properties;
+    if (std::none_of(properties.begin(), properties.end(),
+                     [](const PlyProperty& p) { return p.is_vertex_indices; })) {
+      throw_invalid(file, "the PLY face element has no vertex_indices list");
+    }
+    scan.faces = elements[face_element].count;
+  }
+  check_some_faces(file, scan);
+
+  const bool ascii = format == "ascii";
+  const std::size_t read_elements = face_element + 1;
+  std::uint64_t needed = 0;
+  for (std::size_t i = 0; i < read_elements; ++i) {
+    std::uint64_t record = 0;
+    for (const PlyProperty& property : elements[i].properties) {
+      // Shortest records: a one-character token and a separator per value; a face has 3 indices.
+      const std::uint64_t entries = property.is_vertex_indices ? 3 : 0;
+      if (ascii) {
+        record += property.is_list ? 2 * (1 + entries) : 2;
+      } else {
+        record += property.is_list ? property.count_type->bytes + entries * property.type->bytes
+                                   : property.type->bytes;
+      }
+    }
+    needed = add_saturating(needed, multiply_saturating(record, elements[i].count));
+  }
+  check_room(file, declared(scan.vertices, scan.faces), needed, in.remaining());
+  check_counts(file, scan.vertices, scan.faces, options);
+
+  auto truncated = [&](const PlyElement& element, std::uint64_t record) {
+    throw_invalid(file, "truncated: the header declares " + declared(scan.vertices, scan.faces) +
+                            ", but the data ends in " + element.name + " " +
+                            std::to_string(record) + " (of " + std::to_string(element.count) + ")");
+  };
+
+  if (!ascii) {
+    for (std::size_t i = 0; i < read_elements; ++i) {
+      const PlyElement& element = elements[i];
+      const bool has_list = std::any_of(element.properties.begin(), element.properties.end(),
+                                        [](const PlyProperty& p) { return p.is_list; });
+      if (!has_list) {
+        std::uint64_t record = 0;
+        for (const PlyProperty& property : element.properties) record += property.type->bytes;
+        const std::uint64_t available = in.remaining();
+        if (!in.skip(multiply_saturating(record, element.count))) {
+          truncated(element, record == 0 ? 0 : available / record);
+        }
+        continue;
+      }
+      for (std::uint64_t r = 0; r < element.count; ++r) {
+        for (const PlyProperty& property : element.properties) {
+          if (!property.is_list) {
+            if (!in.skip(property.type->bytes)) truncated(element, r);
+            continue;
+          }
+          unsigned char count_bytes[8];
+          if (!in.read_bytes(count_bytes, property.count_type->bytes)) truncated(element, r);
+          const std::int64_t count = decode_integer(count_bytes, property.count_type->bytes,
+                                                    property.count_type->is_signed, big_endian);
+          if (count < 0) {
+            throw_invalid(file, element.name + " " + std::to_string(r) + " has a negative " +
+                                    property.name + " count (" + std::to_string(count) + ")");
+          }
+          if (!in.skip(
+                  multiply_saturating(static_cast<std::uint64_t>(count), property.type->bytes))) {
+            truncated(element, r);
+          }
+          if (property.is_vertex_indices) scan.corners += static_cast<std::uint64_t>(count);
+        }
+      }
+    }
+    return scan;
+  }
+
+  TokenReader tokens(in);
+  std::string_view token;
+  auto check_value = [&](const PlyElement& element, std::uint64_t r, const PlyProperty& property,
+                         std::string_view value) {
+    if (property.reading == PlyReading::as_float) {
+      const NumberKind kind = classify_float(value);
+      if (kind == NumberKind::non_finite) {
+        throw_invalid(
+            file, at_line(tokens.line()) + element.name + " " + std::to_string(r) +
+                      " has a non-finite " +
+                      (property.is_coordinate ? "coordinate " : "value of " + property.name + " ") +
+                      in_quotes(value) + " (NaN, infinite or beyond single precision)");
+      }
+      if (kind == NumberKind::invalid) {
+        throw_invalid(file, at_line(tokens.line()) + "expected a number for " + property.name +
+                                " of " + element.name + " " + std::to_string(r) + ", got " +
+                                in_quotes(value));
+      }
+    } else if (property.reading == PlyReading::as_integer) {
+      std::int64_t integer = 0;
+      if (!parse_integer(value, integer)) {
+        throw_invalid(file, at_line(tokens.line()) + "expected an integer for " + property.name +
+                                " of " + element.name + " " + std::to_string(r) + ", got " +
+                                in_quotes(value));
+      }
+    }
+  };
+  for (std::size_t i = 0; i < read_elements; ++i) {
+    const PlyElement& element = elements[i];
+    for (std::uint64_t r = 0; r < element.count; ++r) {
+      for (const PlyProperty& property : element.properties) {
+        if (!tokens.next(token)) truncated(element, r);
+        if (!property.is_list) {
+          check_value(element, r, property, token);
+          continue;
+        }
+        std::int64_t count = 0;
+        if (!parse_integer(token, count) || count < 0) {
+          throw_invalid(file, at_line(tokens.line()) + "expected the length of list " +
+                                  property.name + " of " + element.name + " " + std::to_string(r) +
+                                  ", got " + in_quotes(token));
+        }
+        for (std::int64_t entry = 0; entry < count; ++entry) {
+          if (!tokens.next(token)) truncated(element, r);
+          check_value(element, r, property, token);
+        }
+        if (property.is_vertex_indices) scan.corners += static_cast<std::uint64_t>(count);
+      }
+    }
+  }
+  if (read_elements == elements.size() && tokens.next(token)) {
+    throw_invalid(file, "the header declares " + declared(scan.vertices, scan.faces) +
+                            ", but more data follows at line " + std::to_string(tokens.line()) +
+                            " (wrong counts?)");
+  }
+  return scan;
+}
+
+}  // namespace papercraft::load_internal

@@ -1,0 +1,452 @@
+// Checks of the raw faces and the triangle soup, and the safe repairs: unreferenced and duplicate
+// vertices, non-manifold vertices split per fan, consistent and outward orientation.
+
+#include "nodes/load/repair.h"
+
+#include <tbb/parallel_sort.h>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+
+#include "core/union_find.h"
+#include "nodes/load/messages.h"
+
+namespace papercraft::load_internal {
+namespace {
+
+// Keeps the vertices with target[v] == v; any other v becomes the kept vertex target[v]
+// (target[v] < v), or is dropped when target[v] is -1.
+void compact_vertices(Soup& soup, const std::vector<int>& target) {
+  std::vector<int> new_index(soup.positions.size(), -1);
+  int next = 0;
+  for (std::size_t v = 0; v < soup.positions.size(); ++v) {
+    if (target[v] == static_cast<int>(v)) {
+      soup.positions[next] = soup.positions[v];
+      soup.source_vertex[next] = soup.source_vertex[v];
+      new_index[v] = next++;
+    } else if (target[v] >= 0) {
+      new_index[v] = new_index[target[v]];
+    }
+  }
+  soup.positions.resize(next);
+  soup.source_vertex.resize(next);
+  for (Triangle3& t : soup.triangles) {
+    for (int& v : t) v = new_index[v];
+  }
+}
+
+}  // namespace
+
+void check_raw_faces(const RawMesh& raw, const std::string& file) {
+  const std::size_t vertices = raw.positions.size();
+  std::uint64_t non_finite = 0, short_faces = 0, out_of_range = 0, repeated = 0;
+  std::size_t first_non_finite = 0, first_short = 0, first_out = 0, first_repeated = 0;
+  std::int64_t first_bad_index = 0;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const Vec3d& p = raw.positions[v];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      if (non_finite++ == 0) first_non_finite = v;
+    }
+  }
+  if (non_finite > 0) {
+    const Vec3d& p = raw.positions[first_non_finite];
+    throw_invalid(file, "mesh has " + counted(non_finite, "vertex", "vertices") +
+                            " with non-finite coordinates (NaN or infinite), first vertex " +
+                            std::to_string(first_non_finite) + " (" + std::to_string(p[0]) + ", " +
+                            std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")");
+  }
+  for (std::size_t f = 0; f < raw.n_faces(); ++f) {
+    const std::size_t begin = raw.face_start[f];
+    const std::size_t end = raw.face_start[f + 1];
+    if (end - begin < 3) {
+      if (short_faces++ == 0) first_short = f;
+      continue;
+    }
+    bool bad = false;
+    for (std::size_t c = begin; c < end; ++c) {
+      const int index = raw.corners[c];
+      if (index < 0 || static_cast<std::size_t>(index) >= vertices) {
+        if (!bad && out_of_range++ == 0) {
+          first_out = f;
+          first_bad_index = index;
+        }
+        bad = true;
+      }
+    }
+    if (bad) continue;
+    for (std::size_t c = begin; c < end && !bad; ++c) {
+      for (std::size_t d = c + 1; d < end; ++d) {
+        if (raw.corners[c] == raw.corners[d]) {
+          if (repeated++ == 0) first_repeated = f;
+          bad = true;
+          break;
+        }
+      }
+    }
+  }
+  if (short_faces > 0) {
+    throw_invalid(
+        file, "mesh has " + counted(short_faces, "face", "faces") +
+                  " with fewer than 3 vertices (degenerate), first face " +
+                  std::to_string(first_short) + " (" +
+                  std::to_string(raw.face_start[first_short + 1] - raw.face_start[first_short]) +
+                  " vertices)");
+  }
+  if (out_of_range > 0) {
+    throw_invalid(file, "mesh has " + counted(out_of_range, "face", "faces") +
+                            " with out-of-range vertex indices, first face " +
+                            std::to_string(first_out) + " refers to vertex " +
+                            std::to_string(first_bad_index) + " but there are " +
+                            counted(vertices, "vertex", "vertices") + " (indices are 0-based)");
+  }
+  if (repeated > 0) {
+    throw_invalid(file, "mesh has " + counted(repeated, "degenerate face", "degenerate faces") +
+                            " (a vertex repeated), first face " + std::to_string(first_repeated));
+  }
+}
+
+std::size_t remove_unreferenced_vertices(Soup& soup) {
+  std::vector<int> target(soup.positions.size(), -1);
+  for (const Triangle3& t : soup.triangles) {
+    for (int v : t) target[v] = v;
+  }
+  const auto removed = static_cast<std::size_t>(std::count(target.begin(), target.end(), -1));
+  if (removed > 0) compact_vertices(soup, target);
+  return removed;
+}
+
+std::size_t merge_duplicate_vertices(Soup& soup, double epsilon) {
+  const std::size_t n = soup.positions.size();
+  std::vector<int> target(n);
+  std::iota(target.begin(), target.end(), 0);
+  const std::vector<Vec3d>& p = soup.positions;
+  if (epsilon <= 0.0) {
+    std::vector<int> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (p[a][axis] != p[b][axis]) return p[a][axis] < p[b][axis];
+      }
+      return a < b;
+    });
+    for (std::size_t i = 1; i < n; ++i) {
+      if (p[order[i]] == p[order[i - 1]]) target[order[i]] = target[order[i - 1]];
+    }
+  } else {
+    // Grid of cell size epsilon: a duplicate lies in one of the 27 cells around a vertex.
+    auto cell = [&](double x) {
+      return static_cast<std::int64_t>(std::clamp(std::floor(x / epsilon), -1e15, 1e15));
+    };
+    auto key = [](std::int64_t x, std::int64_t y, std::int64_t z) {
+      std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull;
+      h ^= static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
+      h ^= static_cast<std::uint64_t>(z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
+      return h;
+    };
+    std::unordered_multimap<std::uint64_t, int> grid;
+    grid.reserve(n);
+    for (std::size_t v = 0; v < n; ++v) {
+      const std::int64_t cx = cell(p[v][0]), cy = cell(p[v][1]), cz = cell(p[v][2]);
+      int found = -1;
+      for (std::int64_t dx = -1; dx <= 1 && found < 0; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1 && found < 0; ++dy) {
+          for (std::int64_t dz = -1; dz <= 1 && found < 0; ++dz) {
+            const auto range = grid.equal_range(key(cx + dx, cy + dy, cz + dz));
+            for (auto it = range.first; it != range.second; ++it) {
+              const Vec3d d = p[it->second] - p[v];
+              if (std::fabs(d[0]) <= epsilon && std::fabs(d[1]) <= epsilon &&
+                  std::fabs(d[2]) <= epsilon && (found < 0 || it->second < found)) {
+                found = it->second;
+              }
+            }
+          }
+        }
+      }
+      if (found >= 0) {
+        target[v] = found;
+      } else {
+        grid.emplace(key(cx, cy, cz), static_cast<int>(v));
+      }
+    }
+  }
+  std::size_t merged = 0;
+  for (std::size_t v = 0; v < n; ++v) merged += target[v] != static_cast<int>(v);
+  if (merged > 0) compact_vertices(soup, target);
+  return merged;
+}
+
+void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,
+                                const std::string& file) {
+  std::uint64_t degenerate = 0;
+  std::size_t first = 0;
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    const Triangle3& tri = soup.triangles[t];
+    bool bad = tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
+    if (!bad) {
+      const Vec3d& a = soup.positions[tri[0]];
+      const Vec3d& b = soup.positions[tri[1]];
+      const Vec3d& c = soup.positions[tri[2]];
+      const double twice_area = cross(b - a, c - a).norm();
+      const double longest = std::max({(b - a).sqrnorm(), (c - b).sqrnorm(), (a - c).sqrnorm()});
+      bad = twice_area <= options.degenerate_area_ratio * longest;
+    }
+    if (bad && degenerate++ == 0) first = t;
+  }
+  if (degenerate > 0) {
+    throw_invalid(
+        file,
+        "mesh has " +
+            counted(degenerate, "degenerate (zero-area) face", "degenerate (zero-area) faces") +
+            ", first face " + std::to_string(soup.source_face[first]) + " (vertices " +
+            vertex_list(soup.source_vertex, soup.triangles[first]) + ")");
+  }
+}
+
+void check_duplicate_triangles(const Soup& soup, const std::string& file) {
+  struct Key {
+    Triangle3 sorted;
+    int triangle;
+  };
+  std::vector<Key> keys(soup.triangles.size());
+  for (std::size_t t = 0; t < keys.size(); ++t) {
+    keys[t].sorted = soup.triangles[t];
+    std::sort(keys[t].sorted.begin(), keys[t].sorted.end());
+    keys[t].triangle = static_cast<int>(t);
+  }
+  tbb::parallel_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    return a.sorted != b.sorted ? a.sorted < b.sorted : a.triangle < b.triangle;
+  });
+  std::uint64_t duplicates = 0;
+  std::size_t first = 0;
+  for (std::size_t i = 1; i < keys.size(); ++i) {
+    if (keys[i].sorted == keys[i - 1].sorted && duplicates++ == 0) first = i;
+  }
+  if (duplicates > 0) {
+    const Key& original = keys[first - 1];
+    const Key& copy = keys[first];
+    throw_invalid(file, "mesh has " + counted(duplicates, "duplicate face", "duplicate faces") +
+                            " (the same vertices as another face), first face " +
+                            std::to_string(soup.source_face[copy.triangle]) + " repeats face " +
+                            std::to_string(soup.source_face[original.triangle]) + " (vertices " +
+                            vertex_list(soup.source_vertex, soup.triangles[copy.triangle]) + ")");
+  }
+}
+
+// Checks manifoldness; with `repair`, makes the orientation consistent and closed components face
+// outwards. neighbor[3 t + k] is the triangle across edge k (t[k] -> t[k+1]) or -1.
+void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
+                               std::vector<std::string>& repairs) {
+  const std::size_t triangles = soup.triangles.size();
+  struct EdgeUse {
+    std::uint64_t key;
+    std::uint32_t slot;  // 3 * triangle + k
+  };
+  std::vector<EdgeUse> uses(3 * triangles);
+  for (std::size_t t = 0; t < triangles; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const auto a = static_cast<std::uint32_t>(soup.triangles[t][k]);
+      const auto b = static_cast<std::uint32_t>(soup.triangles[t][(k + 1) % 3]);
+      uses[3 * t + k] = {(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b),
+                         static_cast<std::uint32_t>(3 * t + k)};
+    }
+  }
+  tbb::parallel_sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.key != y.key ? x.key < y.key : x.slot < y.slot;
+  });
+
+  auto edge_vertices = [&](std::uint64_t key) {
+    return std::to_string(soup.source_vertex[key >> 32]) + "-" +
+           std::to_string(soup.source_vertex[key & 0xffffffffu]);
+  };
+  auto face_of_slot = [&](std::uint32_t slot) {
+    return std::to_string(soup.source_face[slot / 3]);
+  };
+  std::vector<int> neighbor(3 * triangles, -1);
+  UnionFind fans(3 * triangles);
+  std::uint64_t non_manifold = 0, inconsistent = 0;
+  std::size_t first_non_manifold = 0, first_inconsistent = 0;
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i + 1;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    if (j - i >= 3) {
+      if (non_manifold++ == 0) first_non_manifold = i;
+    } else if (j - i == 2) {
+      const std::uint32_t s1 = uses[i].slot, s2 = uses[i + 1].slot;
+      const std::uint32_t t1 = s1 / 3, t2 = s2 / 3;
+      neighbor[s1] = static_cast<int>(t2);
+      neighbor[s2] = static_cast<int>(t1);
+      const Triangle3& a = soup.triangles[t1];
+      const Triangle3& b = soup.triangles[t2];
+      const int from = a[s1 % 3];
+      const int to = a[(s1 % 3 + 1) % 3];
+      if (b[s2 % 3] == from && inconsistent++ == 0) first_inconsistent = i;
+      // The two faces are neighbours in the fans of both edge ends.
+      fans.unite(s1 - s1 % 3 + corner_of(a, from), s2 - s2 % 3 + corner_of(b, from));
+      fans.unite(s1 - s1 % 3 + corner_of(a, to), s2 - s2 % 3 + corner_of(b, to));
+    }
+    i = j;
+  }
+  if (non_manifold > 0) {
+    std::string faces;
+    for (std::size_t k = first_non_manifold;
+         k < uses.size() && uses[k].key == uses[first_non_manifold].key; ++k) {
+      faces += (faces.empty() ? "" : ", ") + face_of_slot(uses[k].slot);
+    }
+    throw_invalid(file, "mesh has " +
+                            counted(non_manifold, "non-manifold edge", "non-manifold edges") +
+                            " (shared by 3 or more faces), first at vertices " +
+                            edge_vertices(uses[first_non_manifold].key) + " (faces " + faces + ")");
+  }
+
+  const std::size_t vertices = soup.positions.size();
+  std::vector<std::int64_t> fan_of_vertex(vertices, -1);
+  std::vector<char> bad_vertex(vertices, 0);
+  for (std::size_t slot = 0; slot < 3 * triangles; ++slot) {
+    const int v = soup.triangles[slot / 3][slot % 3];
+    const auto root = static_cast<std::uint32_t>(fans.find(slot));
+    if (fan_of_vertex[v] < 0) {
+      fan_of_vertex[v] = root;
+    } else if (fan_of_vertex[v] != root) {
+      bad_vertex[v] = 1;
+    }
+  }
+  const auto non_manifold_vertices =
+      static_cast<std::uint64_t>(std::count(bad_vertex.begin(), bad_vertex.end(), 1));
+  if (non_manifold_vertices > 0 && repair) {
+    // Every fan of a vertex after its first gets a copy of the vertex (same position, same
+    // input vertex): the surface is unchanged and becomes manifold, pieces merely touch there.
+    // A fan root is a slot, so it names one fan of one vertex.
+    std::unordered_map<std::uint32_t, int> copy_of_fan;
+    for (std::size_t slot = 0; slot < 3 * triangles; ++slot) {
+      int& corner = soup.triangles[slot / 3][slot % 3];
+      const int v = corner;
+      if (!bad_vertex[v]) continue;
+      const auto root = static_cast<std::uint32_t>(fans.find(slot));
+      if (fan_of_vertex[v] == root) continue;
+      const auto [it, added] =
+          copy_of_fan.try_emplace(root, static_cast<int>(soup.positions.size()));
+      if (added) {
+        soup.positions.push_back(soup.positions[v]);
+        soup.source_vertex.push_back(soup.source_vertex[v]);
+      }
+      corner = it->second;
+    }
+    repairs.push_back(
+        "split " + counted(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
+        " into one vertex per fan (" + counted(copy_of_fan.size(), "copy", "copies") + " added)");
+  } else if (non_manifold_vertices > 0) {
+    int first = INT_MAX;
+    for (std::size_t v = 0; v < vertices; ++v) {
+      if (bad_vertex[v]) first = std::min(first, soup.source_vertex[v]);
+    }
+    throw_invalid(
+        file, "mesh has " +
+                  counted(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
+                  " (their faces form more than one fan), first vertex " + std::to_string(first));
+  }
+
+  if (inconsistent > 0 && !repair) {
+    throw_invalid(file, "mesh is not consistently oriented: " +
+                            counted(inconsistent, "edge is", "edges are") +
+                            " traversed in the same direction by both of its faces, first at "
+                            "vertices " +
+                            edge_vertices(uses[first_inconsistent].key) + " (faces " +
+                            face_of_slot(uses[first_inconsistent].slot) + ", " +
+                            face_of_slot(uses[first_inconsistent + 1].slot) + ")");
+  }
+  if (!repair) return;
+
+  // Components through manifold edges; flip[t] makes every neighbour pair agree (paper-free
+  // standard breadth-first propagation), keeping each component's majority orientation.
+  std::vector<int> component(triangles, -1);
+  std::vector<char> flip(triangles, 0);
+  std::vector<std::uint32_t> members;
+  std::vector<std::uint32_t> stack;
+  std::uint64_t reoriented = 0, flipped_components = 0, flipped_faces = 0;
+  int components = 0;
+  for (std::size_t seed = 0; seed < triangles; ++seed) {
+    if (component[seed] >= 0) continue;
+    members.clear();
+    component[seed] = components;
+    stack.push_back(static_cast<std::uint32_t>(seed));
+    bool closed = true;
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      members.push_back(t);
+      const Triangle3& tri = soup.triangles[t];
+      for (int k = 0; k < 3; ++k) {
+        const int u = neighbor[3 * t + k];
+        if (u < 0) {
+          closed = false;
+          continue;
+        }
+        const Triangle3& other = soup.triangles[u];
+        const int from = tri[k];
+        const int ku = corner_of(other, from);
+        const bool same_direction = other[(ku + 1) % 3] == tri[(k + 1) % 3];
+        const char wanted = static_cast<char>(flip[t] ^ (same_direction ? 1 : 0));
+        if (component[u] < 0) {
+          component[u] = components;
+          flip[u] = wanted;
+          stack.push_back(static_cast<std::uint32_t>(u));
+        } else if (flip[u] != wanted) {
+          throw_invalid(file,
+                        "mesh has a non-orientable component (like a Moebius strip), "
+                        "containing face " +
+                            std::to_string(soup.source_face[t]));
+        }
+      }
+    }
+    std::size_t flips = 0;
+    for (std::uint32_t t : members) flips += flip[t];
+    if (2 * flips > members.size()) {
+      for (std::uint32_t t : members) flip[t] ^= 1;
+      flips = members.size() - flips;
+    }
+    reoriented += flips;
+    if (closed) {
+      // Signed volume (divergence theorem), relative to a point of the component for precision.
+      const Vec3d origin = soup.positions[soup.triangles[members.front()][0]];
+      double volume = 0.0;
+      for (std::uint32_t t : members) {
+        const Triangle3& tri = soup.triangles[t];
+        const Vec3d a = soup.positions[tri[0]] - origin;
+        Vec3d b = soup.positions[tri[1]] - origin;
+        Vec3d c = soup.positions[tri[2]] - origin;
+        if (flip[t]) std::swap(b, c);
+        volume += OpenMesh::dot(a, cross(b, c));
+      }
+      if (volume < 0.0) {
+        for (std::uint32_t t : members) flip[t] ^= 1;
+        ++flipped_components;
+        flipped_faces += members.size();
+        reoriented -= flips;
+      }
+    }
+    ++components;
+  }
+  for (std::size_t t = 0; t < triangles; ++t) {
+    if (!flip[t]) continue;
+    std::swap(soup.triangles[t][1], soup.triangles[t][2]);
+    if (!soup.corner_uv.empty()) std::swap(soup.corner_uv[t][1], soup.corner_uv[t][2]);
+  }
+  if (reoriented > 0) {
+    repairs.push_back("reoriented " + counted(reoriented, "face", "faces") +
+                      " to agree with their neighbours");
+  }
+  if (flipped_components > 0) {
+    repairs.push_back(
+        "flipped " +
+        counted(flipped_components, "closed component that faced", "closed components that faced") +
+        " inwards (" + counted(flipped_faces, "face", "faces") + ")");
+  }
+}
+
+}  // namespace papercraft::load_internal

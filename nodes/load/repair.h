@@ -1,0 +1,36 @@
+#pragma once
+// Step 3 of loading, second part: the checks of the raw faces and of the triangle soup, and the
+// safe repairs (unreferenced and duplicate vertices, non-manifold vertices, orientation).
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "nodes/load/openmesh.h"
+#include "nodes/load/recording_importer.h"
+#include "nodes/load/soup.h"
+
+namespace papercraft::load_internal {
+
+/// Throws InvalidInputException for non-finite positions, faces with fewer than 3 vertices,
+/// out-of-range vertex indices or a vertex repeated in a face.
+void check_raw_faces(const RawMesh& raw, const std::string& file);
+/// Removes the vertices no triangle uses; returns how many.
+std::size_t remove_unreferenced_vertices(Soup& soup);
+/// Merges each vertex into an earlier one whose coordinates all differ from it by at most
+/// `epsilon` (0: only equal positions); returns how many were merged.
+std::size_t merge_duplicate_vertices(Soup& soup, double epsilon);
+/// Throws InvalidInputException for a triangle with a repeated vertex or with twice its area at
+/// most options.degenerate_area_ratio times its longest edge squared.
+void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,
+                                const std::string& file);
+/// Throws InvalidInputException for two triangles over the same three vertices.
+void check_duplicate_triangles(const Soup& soup, const std::string& file);
+/// Throws InvalidInputException for non-manifold edges and non-orientable components, and without
+/// `repair` for non-manifold vertices and an inconsistent orientation. With `repair`, splits
+/// non-manifold vertices, makes the orientation consistent and closed components face outwards,
+/// adding one line per change to `repairs`.
+void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
+                               std::vector<std::string>& repairs);
+
+}  // namespace papercraft::load_internal
