@@ -1,0 +1,109 @@
+// Whether a person can cut and glue what a run printed: reads <model>/strips.json and
+// <model>/report.json of finished runs and prints, per model, the pieces narrower than a
+// fold-able width over much of their area, the pieces smaller than a fingertip, and every way a
+// seam can fail to meet (tests/support/pattern_checks.h), then the totals.
+//
+//   piece_quality OUT/eight OUT/cactus ...            # model folders
+//   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 OUT/*/
+//
+// Exit status 0 (findings are data), 2 for a bad command line or unreadable folder.
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/pattern_checks.h"
+
+namespace {
+
+nlohmann::json read_json(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  return nlohmann::json::parse(in);
+}
+
+int count_notes(const nlohmann::json& report, const std::string& text) {
+  int count = 0;
+  for (const auto& note : report.value("notes", nlohmann::json::array()))
+    count += note.get<std::string>().find(text) != std::string::npos;
+  return count;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  double narrow_mm = 3.0, narrow_share = 0.25, small_mm2 = 100.0;
+  std::vector<std::filesystem::path> models;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> double {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "%s needs a value\n", arg.c_str());
+        std::exit(2);
+      }
+      return std::atof(argv[++i]);
+    };
+    if (arg == "--narrow-mm") narrow_mm = value();
+    else if (arg == "--narrow-share") narrow_share = value();
+    else if (arg == "--small-mm2") small_mm2 = value();
+    else if (arg.rfind("--", 0) == 0) {
+      std::fprintf(stderr, "unknown option %s\n", arg.c_str());
+      return 2;
+    } else models.emplace_back(arg);
+  }
+  if (models.empty()) {
+    std::fprintf(stderr, "usage: piece_quality [--narrow-mm 3] [--narrow-share 0.25] "
+                         "[--small-mm2 100] MODEL_DIR...\n");
+    return 2;
+  }
+  std::printf("| model | pieces | narrow | small | smallest mm^2 | seam edges | no partner | "
+              "length differs | other label | labels | not two chains | sides differ | "
+              "notes unmatched |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  long total[12] = {};
+  for (const auto& dir : models) {
+    nlohmann::json strips, report;
+    try {
+      strips = read_json(dir / "strips.json").at("strips");
+      report = read_json(dir / "report.json");
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "%s: %s\n", dir.string().c_str(), e.what());
+      return 2;
+    }
+    const double mm_per_unit = report.at("result").at("mm_per_unit").get<double>();
+    const auto pieces =
+        papercraft::testing::check_pieces(strips, mm_per_unit, narrow_mm, narrow_share, small_mm2);
+    const auto seams = papercraft::testing::check_seams(strips);
+    const int unmatched_notes = count_notes(report, "ends do not match") +
+                                count_notes(report, "has no partner edge");
+    const long row[12] = {pieces.pieces,
+                          pieces.narrow,
+                          pieces.small,
+                          0,
+                          seams.seam_edges,
+                          seams.edges_without_one_partner,
+                          seams.edges_of_other_length,
+                          seams.edges_with_other_label,
+                          seams.labels,
+                          seams.labels_not_two_chains,
+                          seams.labels_with_sides_differing,
+                          unmatched_notes};
+    for (int k = 0; k < 12; ++k) total[k] += row[k];
+    std::printf("| %s | %ld | %ld | %ld | %.0f | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+                dir.filename().empty() ? dir.parent_path().filename().c_str()
+                                       : dir.filename().c_str(),
+                row[0], row[1], row[2], pieces.smallest_mm2, row[4], row[5], row[6], row[7],
+                row[8], row[9], row[10], row[11]);
+    for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
+    for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
+  }
+  std::printf("| **total** | %ld | %ld | %ld | | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+              total[0], total[1], total[2], total[4], total[5], total[6], total[7], total[8],
+              total[9], total[10], total[11]);
+  return 0;
+}

@@ -1,0 +1,32 @@
+#pragma once
+// How narrow a flat piece is: the share of its area that no disc of a given diameter inside
+// the piece covers, i.e. the piece minus its morphological opening by that disc. A long band
+// 2 mm wide is narrow everywhere at 3 mm; a wide piece is narrow only in its sharp corners
+// and at the tips of a cone, which cover little area.
+
+#include <vector>
+
+#include "core/triangle_mesh.h"
+
+namespace papercraft {
+
+struct PieceWidthOptions {
+  /// Raster cell size as a fraction of the disc's diameter; the raster is coarsened so that it
+  /// never holds more than `max_cells` cells.
+  double cell_fraction = 0.125;
+  long max_cells = 4'000'000;
+};
+
+/// Share of the area of the flat piece (`points`, `triangles`: a 2D triangle soup, any
+/// orientation; overlapping triangles count once) that lies farther than `width / 2` from the
+/// centre of every disc of diameter `width` contained in the piece. 0 for a piece at least
+/// `width` wide everywhere (up to its corners), 1 for a band narrower than `width`. Measured on
+/// a raster (squared Euclidean distance transforms, Felzenszwalb & Huttenlocher 2012), so it is
+/// exact to about one cell. Returns 0 for a piece without area.
+/// \throws InvalidInputException if width is not positive and finite, a triangle index is out
+///   of range or a point is not finite.
+double narrow_area_fraction(const std::vector<Vec2>& points,
+                            const std::vector<Triangle>& triangles, double width,
+                            const PieceWidthOptions& options = {});
+
+}  // namespace papercraft

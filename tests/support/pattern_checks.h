@@ -1,0 +1,219 @@
+#pragma once
+// Independent checks of a pattern as strips.json describes it (DESIGN.md section 4), for the
+// tests and for bench/piece_quality: seams glued edge to edge with equal lengths and one label
+// per chain on both sides, piece sizes and widths on paper. Reads only the JSON, never the
+// structures that made it.
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/piece_width.h"
+
+namespace papercraft::testing {
+
+struct SeamFindings {
+  int seam_edges = 0;
+  int edges_without_one_partner = 0;  // not exactly one seam edge with the same 3D ends
+  int edges_of_other_length = 0;      // partner's flat length differs by more than 1e-9 rel.
+  int edges_with_other_label = 0;     // partner carries another label or names another strip
+  int labels = 0;
+  int labels_not_two_chains = 0;  // a label whose edges are not one chain on each of two sides
+  int labels_with_sides_differing = 0;  // a label whose two sides differ in flat length or edges
+  std::vector<std::string> problems;     // the first few, for messages
+
+  bool exact() const {
+    return edges_without_one_partner == 0 && edges_of_other_length == 0 &&
+           edges_with_other_label == 0 && labels_not_two_chains == 0 &&
+           labels_with_sides_differing == 0;
+  }
+};
+
+namespace detail {
+
+inline std::array<double, 3> point3(const nlohmann::json& strip, int v) {
+  const auto& p = strip.at("vertices3d").at(v);
+  return {p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>()};
+}
+
+inline double flat_length(const nlohmann::json& strip, int a, int b) {
+  const auto& p = strip.at("vertices2d").at(a);
+  const auto& q = strip.at("vertices2d").at(b);
+  return std::hypot(p.at(0).get<double>() - q.at(0).get<double>(),
+                    p.at(1).get<double>() - q.at(1).get<double>());
+}
+
+}  // namespace detail
+
+/// Seams of strips.json's "strips": every seam edge glued to exactly one edge with the same
+/// 3D end points (running the other way), of the same flat length, with the same label; each
+/// label one chain of consecutive edges on each of its two sides (or on the two sides of one
+/// strip's own seam).
+inline SeamFindings check_seams(const nlohmann::json& strips) {
+  SeamFindings findings;
+  struct Edge {
+    int strip;
+    int index;
+    int v0, v1;
+    std::string label;
+    int neighbour;
+  };
+  std::vector<Edge> edges;
+  std::map<int, int> strip_of_id;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+    strip_of_id[strips[s].at("id").get<int>()] = s;
+  using Key = std::array<double, 6>;
+  std::map<Key, std::vector<int>> by_ends;  // directed: v0 then v1
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+    const auto& boundary = strips[s].at("boundary");
+    for (int e = 0; e < static_cast<int>(boundary.size()); ++e) {
+      const auto& b = boundary[e];
+      if (b.at("kind").get<std::string>() != "seam") continue;
+      Edge edge{s, e, b.at("v0").get<int>(), b.at("v1").get<int>(),
+                b.value("label", std::string()), b.value("neighbour", -1)};
+      const auto p = detail::point3(strips[s], edge.v0), q = detail::point3(strips[s], edge.v1);
+      by_ends[{p[0], p[1], p[2], q[0], q[1], q[2]}].push_back(static_cast<int>(edges.size()));
+      edges.push_back(edge);
+    }
+  }
+  findings.seam_edges = static_cast<int>(edges.size());
+  auto problem = [&](const std::string& text) {
+    if (findings.problems.size() < 8) findings.problems.push_back(text);
+  };
+  auto name = [&](const Edge& e) {
+    return "strip " + strips[e.strip].at("id").dump() + " edge " + std::to_string(e.index) +
+           " (" + e.label + ")";
+  };
+  std::vector<int> partner(edges.size(), -1);
+  for (int g = 0; g < static_cast<int>(edges.size()); ++g) {
+    const Edge& e = edges[g];
+    const auto p = detail::point3(strips[e.strip], e.v0), q = detail::point3(strips[e.strip], e.v1);
+    const auto it = by_ends.find({q[0], q[1], q[2], p[0], p[1], p[2]});
+    const int count = it == by_ends.end() ? 0 : static_cast<int>(it->second.size());
+    if (count != 1) {
+      ++findings.edges_without_one_partner;
+      problem(name(e) + " has " + std::to_string(count) + " partner edges");
+      continue;
+    }
+    partner[g] = it->second.front();
+    const Edge& o = edges[partner[g]];
+    const double a = detail::flat_length(strips[e.strip], e.v0, e.v1);
+    const double b = detail::flat_length(strips[o.strip], o.v0, o.v1);
+    if (std::abs(a - b) > 1e-9 * std::max(a, b)) {
+      ++findings.edges_of_other_length;
+      problem(name(e) + " is " + std::to_string(a) + " long, its partner " + std::to_string(b));
+    }
+    const int neighbour_id = strips[o.strip].at("id").get<int>();
+    if (o.label != e.label || e.neighbour != neighbour_id) {
+      ++findings.edges_with_other_label;
+      problem(name(e) + " is glued to " + name(o) + " (neighbour " +
+              std::to_string(e.neighbour) + ")");
+    }
+  }
+  // Chains: per label, the edges of each strip must form one run of consecutive boundary
+  // edges (v1 of one is v0 of the next), and the label must have two sides.
+  std::map<std::string, std::vector<int>> by_label;
+  for (int g = 0; g < static_cast<int>(edges.size()); ++g) by_label[edges[g].label].push_back(g);
+  findings.labels = static_cast<int>(by_label.size());
+  for (const auto& [label, members] : by_label) {
+    std::map<int, std::vector<int>> per_strip;
+    for (int g : members) per_strip[edges[g].strip].push_back(g);
+    bool chains_ok = per_strip.size() == 2 || per_strip.size() == 1;
+    int runs = 0;
+    for (const auto& [strip, list] : per_strip) {
+      // Runs: edges whose start is no other member's end (in this strip); a closed chain has 0.
+      std::set<int> ends;
+      for (int g : list) ends.insert(edges[g].v1);
+      int starts = 0;
+      for (int g : list) starts += ends.count(edges[g].v0) == 0;
+      runs += std::max(starts, 1);
+    }
+    if (runs != 2) chains_ok = false;
+    if (!chains_ok) {
+      ++findings.labels_not_two_chains;
+      problem("label " + label + " spans " + std::to_string(per_strip.size()) + " strips in " +
+              std::to_string(runs) + " chains");
+    }
+    // Both sides: the partners of the label's edges are exactly its edges (so the label's
+    // edges pair up across the seam), each of the same flat length as its partner.
+    bool sides_ok = true;
+    std::set<int> member_set(members.begin(), members.end());
+    std::map<int, double> length;  // per strip, for the message
+    for (int g : members) {
+      const Edge& e = edges[g];
+      const double a = detail::flat_length(strips[e.strip], e.v0, e.v1);
+      length[e.strip] += a;
+      if (partner[g] < 0 || member_set.count(partner[g]) == 0) {
+        sides_ok = false;
+        continue;
+      }
+      const Edge& o = edges[partner[g]];
+      const double b = detail::flat_length(strips[o.strip], o.v0, o.v1);
+      if (std::abs(a - b) > 1e-9 * std::max(a, b)) sides_ok = false;
+    }
+    if (!sides_ok) {
+      ++findings.labels_with_sides_differing;
+      std::string sides;
+      for (const auto& [strip, total] : length)
+        sides += " " + strips[strip].at("id").dump() + ":" + std::to_string(total);
+      problem("label " + label + " has sides that differ (length per strip" + sides + ")");
+    }
+  }
+  return findings;
+}
+
+struct PieceFindings {
+  int pieces = 0;
+  int narrow = 0;  // more than `narrow_share` of the area narrower than `narrow_mm`
+  int small = 0;   // less than `small_mm2`
+  double smallest_mm2 = 0.0;
+  double most_narrow_share = 0.0;
+  std::vector<std::string> problems;
+};
+
+/// Sizes on paper of the flat strips (model units times `mm_per_unit`).
+inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_unit,
+                                  double narrow_mm = 3.0, double narrow_share = 0.25,
+                                  double small_mm2 = 100.0) {
+  PieceFindings findings;
+  findings.smallest_mm2 = 1e300;
+  for (const auto& strip : strips) {
+    std::vector<Vec2> points;
+    for (const auto& p : strip.at("vertices2d"))
+      points.emplace_back(p.at(0).get<double>() * mm_per_unit, p.at(1).get<double>() * mm_per_unit);
+    std::vector<Triangle> triangles;
+    double area = 0.0;
+    for (const auto& t : strip.at("triangles")) {
+      const Triangle tri{t.at(0).get<int>(), t.at(1).get<int>(), t.at(2).get<int>()};
+      triangles.push_back(tri);
+      const Vec2 u = points[tri[1]] - points[tri[0]], v = points[tri[2]] - points[tri[0]];
+      area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+    }
+    ++findings.pieces;
+    findings.smallest_mm2 = std::min(findings.smallest_mm2, area);
+    const double share = narrow_area_fraction(points, triangles, narrow_mm);
+    findings.most_narrow_share = std::max(findings.most_narrow_share, share);
+    const std::string id = strip.at("id").dump();
+    if (share > narrow_share) {
+      ++findings.narrow;
+      if (findings.problems.size() < 8)
+        findings.problems.push_back("strip " + id + ": " + std::to_string(int(share * 100)) +
+                                    "% narrower than " + std::to_string(narrow_mm) + " mm");
+    }
+    if (area < small_mm2) {
+      ++findings.small;
+      if (findings.problems.size() < 8)
+        findings.problems.push_back("strip " + id + ": " + std::to_string(area) + " mm^2");
+    }
+  }
+  if (findings.pieces == 0) findings.smallest_mm2 = 0.0;
+  return findings;
+}
+
+}  // namespace papercraft::testing
