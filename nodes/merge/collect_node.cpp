@@ -1,4 +1,4 @@
-// Adapter support shared by merge.congruent and merge.none (see collect.h).
+// Adapter support shared by merge.congruent and merge.none (see collect_node.h).
 
 #include <algorithm>
 
