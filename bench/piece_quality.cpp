@@ -48,22 +48,28 @@ int main(int argc, char** argv) {
       }
       return std::atof(argv[++i]);
     };
-    if (arg == "--narrow-mm") narrow_mm = value();
-    else if (arg == "--narrow-share") narrow_share = value();
-    else if (arg == "--small-mm2") small_mm2 = value();
+    if (arg == "--narrow-mm")
+      narrow_mm = value();
+    else if (arg == "--narrow-share")
+      narrow_share = value();
+    else if (arg == "--small-mm2")
+      small_mm2 = value();
     else if (arg.rfind("--", 0) == 0) {
       std::fprintf(stderr, "unknown option %s\n", arg.c_str());
       return 2;
-    } else models.emplace_back(arg);
+    } else
+      models.emplace_back(arg);
   }
   if (models.empty()) {
-    std::fprintf(stderr, "usage: piece_quality [--narrow-mm 3] [--narrow-share 0.25] "
-                         "[--small-mm2 100] MODEL_DIR...\n");
+    std::fprintf(stderr,
+                 "usage: piece_quality [--narrow-mm 3] [--narrow-share 0.25] "
+                 "[--small-mm2 100] MODEL_DIR...\n");
     return 2;
   }
-  std::printf("| model | pieces | narrow | small | smallest mm^2 | seam edges | no partner | "
-              "length differs | other label | labels | not two chains | sides differ | "
-              "notes unmatched |\n");
+  std::printf(
+      "| model | pieces | narrow | small | smallest mm^2 | seam edges | no partner | "
+      "length differs | other label | labels | not two chains | sides differ | "
+      "notes unmatched |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   long total[12] = {};
   for (const auto& dir : models) {
@@ -79,8 +85,8 @@ int main(int argc, char** argv) {
     const auto pieces =
         papercraft::testing::check_pieces(strips, mm_per_unit, narrow_mm, narrow_share, small_mm2);
     const auto seams = papercraft::testing::check_seams(strips);
-    const int unmatched_notes = count_notes(report, "ends do not match") +
-                                count_notes(report, "has no partner edge");
+    const int unmatched_notes =
+        count_notes(report, "ends do not match") + count_notes(report, "has no partner edge");
     const long row[12] = {pieces.pieces,
                           pieces.narrow,
                           pieces.small,
@@ -94,11 +100,11 @@ int main(int argc, char** argv) {
                           seams.labels_with_sides_differing,
                           unmatched_notes};
     for (int k = 0; k < 12; ++k) total[k] += row[k];
-    std::printf("| %s | %ld | %ld | %ld | %.0f | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
-                dir.filename().empty() ? dir.parent_path().filename().c_str()
-                                       : dir.filename().c_str(),
-                row[0], row[1], row[2], pieces.smallest_mm2, row[4], row[5], row[6], row[7],
-                row[8], row[9], row[10], row[11]);
+    std::printf(
+        "| %s | %ld | %ld | %ld | %.0f | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+        dir.filename().empty() ? dir.parent_path().filename().c_str() : dir.filename().c_str(),
+        row[0], row[1], row[2], pieces.smallest_mm2, row[4], row[5], row[6], row[7], row[8], row[9],
+        row[10], row[11]);
     for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }

@@ -1,9 +1,14 @@
 #include "core/piece_width.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <map>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
 #include "core/errors.h"
 
@@ -53,9 +58,8 @@ void distance_transform(std::vector<double>& grid, int width, int height) {
 
 }  // namespace
 
-double narrow_area_fraction(const std::vector<Vec2>& points,
-                            const std::vector<Triangle>& triangles, double width,
-                            const PieceWidthOptions& options) {
+double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                            double width, const PieceWidthOptions& options) {
   if (!(width > 0.0) || !std::isfinite(width))
     throw InvalidInputException("narrow_area_fraction: width must be positive and finite");
   const int count = static_cast<int>(points.size());
@@ -131,6 +135,132 @@ double narrow_area_fraction(const std::vector<Vec2>& points,
   for (std::size_t i = 0; i < inside.size(); ++i)
     narrow += inside[i] && std::sqrt(centres[i]) > radius;
   return double(narrow) / double(inside_cells);
+}
+
+}  // namespace papercraft
+
+namespace papercraft {
+namespace {
+
+using Cell = std::array<std::int64_t, 3>;
+
+struct CellHash {
+  std::size_t operator()(const Cell& c) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+Cell cell_of(const Vec3& p, double size) {
+  return {static_cast<std::int64_t>(std::floor(p.x() / size)),
+          static_cast<std::int64_t>(std::floor(p.y() / size)),
+          static_cast<std::int64_t>(std::floor(p.z() / size))};
+}
+
+double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 d = b - a;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * d)).norm();
+}
+
+}  // namespace
+
+double narrow_area_fraction(const TriangleMesh& piece, double width,
+                            const PieceWidthOptions& options) {
+  if (!(width > 0.0) || !std::isfinite(width))
+    throw InvalidInputException("narrow_area_fraction: width must be positive and finite");
+  const int count = static_cast<int>(piece.vertices.size());
+  std::map<std::pair<int, int>, int> edge_uses;
+  double area = 0.0;
+  for (const Triangle& t : piece.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] < 0 || t[k] >= count)
+        throw InvalidInputException("narrow_area_fraction: triangle index " + std::to_string(t[k]) +
+                                    " out of range [0, " + std::to_string(count) + ")");
+      const int a = t[k], b = t[(k + 1) % 3];
+      ++edge_uses[{std::min(a, b), std::max(a, b)}];
+    }
+    const Vec3& p = piece.vertices[t[0]];
+    area += 0.5 * (piece.vertices[t[1]] - p).cross(piece.vertices[t[2]] - p).norm();
+  }
+  if (!(area > 0.0)) return 0.0;
+  const double radius = 0.5 * width;
+  // Boundary edges, cut into pieces no longer than the radius, in a grid of cells of the
+  // radius: every boundary point within the radius of a sample lies in the sample's cell or
+  // one of its 26 neighbours.
+  std::unordered_map<Cell, std::vector<std::pair<Vec3, Vec3>>, CellHash> boundary;
+  bool has_boundary = false;
+  for (const auto& [edge, uses] : edge_uses) {
+    if (uses != 1) continue;
+    has_boundary = true;
+    const Vec3& a = piece.vertices[edge.first];
+    const Vec3& b = piece.vertices[edge.second];
+    const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / radius)));
+    for (int i = 0; i < parts; ++i) {
+      const Vec3 p = a + (b - a) * (double(i) / parts), q = a + (b - a) * (double(i + 1) / parts);
+      boundary[cell_of(0.5 * (p + q), radius)].emplace_back(p, q);
+    }
+  }
+  if (!has_boundary) return 0.0;
+  // Samples: the centroids of a k x k subdivision of each triangle, k so that they are at
+  // most `spacing` apart; each carries its share of the area.
+  double spacing = width * options.cell_fraction;
+  if (area / (spacing * spacing) > double(options.max_cells))
+    spacing = std::sqrt(area / double(options.max_cells));
+  struct Sample {
+    Vec3 point;
+    double area;
+  };
+  std::vector<Sample> samples;
+  for (const Triangle& t : piece.triangles) {
+    const Vec3 &a = piece.vertices[t[0]], &b = piece.vertices[t[1]], &c = piece.vertices[t[2]];
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
+    const double share = 0.5 * (b - a).cross(c - a).norm() / (double(k) * k);
+    const Vec3 u = (b - a) / k, v = (c - a) / k;
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; i + j < k; ++j) {
+        samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share});  // upright
+        if (i + j + 1 < k) samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share});
+      }
+    }
+  }
+  auto near_boundary = [&](const Vec3& p) {
+    const Cell c = cell_of(p, radius);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = boundary.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == boundary.end()) continue;
+          for (const auto& [a, b] : it->second)
+            if (segment_distance(p, a, b) < radius) return true;
+        }
+    return false;
+  };
+  std::unordered_map<Cell, std::vector<Vec3>, CellHash> centres;
+  for (const Sample& s : samples)
+    if (!near_boundary(s.point)) centres[cell_of(s.point, radius)].push_back(s.point);
+  if (centres.empty()) return 1.0;
+  double narrow = 0.0;
+  for (const Sample& s : samples) {
+    const Cell c = cell_of(s.point, radius);
+    bool covered = false;
+    for (std::int64_t dx = -1; dx <= 1 && !covered; ++dx)
+      for (std::int64_t dy = -1; dy <= 1 && !covered; ++dy)
+        for (std::int64_t dz = -1; dz <= 1 && !covered; ++dz) {
+          const auto it = centres.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == centres.end()) continue;
+          for (const Vec3& centre : it->second)
+            if ((centre - s.point).squaredNorm() <= radius * radius) {
+              covered = true;
+              break;
+            }
+        }
+    if (!covered) narrow += s.area;
+  }
+  return std::min(1.0, narrow / area);
 }
 
 }  // namespace papercraft

@@ -25,8 +25,21 @@ struct PieceWidthOptions {
 /// exact to about one cell. Returns 0 for a piece without area.
 /// \throws InvalidInputException if width is not positive and finite, a triangle index is out
 ///   of range or a point is not finite.
-double narrow_area_fraction(const std::vector<Vec2>& points,
-                            const std::vector<Triangle>& triangles, double width,
+double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                            double width, const PieceWidthOptions& options = {});
+
+/// The same share for a piece of surface in 3D, with Euclidean distances: sample points
+/// (spaced at most `cell_fraction` times `width` apart over every triangle) farther than
+/// `width / 2` from the piece's boundary edges (edges of one triangle) are disc centres, and
+/// a sample within `width / 2` of a centre is wide. On a flat piece this is the 2D share up to
+/// the sampling; on a curved one the Euclidean distance to the boundary is at most the
+/// distance along the surface, so a bent piece reads at most as wide as it unfolds (a tube
+/// narrower than `width` reads as narrow even when its unrolled band would be wide). A closed
+/// piece (no boundary) returns 0. At most `max_cells` samples: larger pieces are sampled more
+/// coarsely.
+/// \throws InvalidInputException if width is not positive and finite or an index is out of
+///   range.
+double narrow_area_fraction(const TriangleMesh& piece, double width,
                             const PieceWidthOptions& options = {});
 
 }  // namespace papercraft

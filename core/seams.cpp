@@ -1,279 +1,359 @@
 #include "core/seams.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
-#include <numeric>
 #include <string>
 #include <unordered_map>
 #include <utility>
 
 #include "core/errors.h"
+#include "core/union_find.h"
 
 namespace papercraft {
 namespace {
+
+using PointKey = std::array<double, 3>;
+using EdgeKey = std::array<double, 6>;
+
+PointKey key_of(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
+
+EdgeKey directed_key(const Vec3& p, const Vec3& q) {
+  return {p.x(), p.y(), p.z(), q.x(), q.y(), q.z()};
+}
+
+void check_ranges(const std::vector<FlatStrip>& strips) {
+  for (const FlatStrip& strip : strips) {
+    const int count = static_cast<int>(strip.vertices3d.size());
+    for (std::size_t e = 0; e < strip.boundary.size(); ++e) {
+      const BoundaryEdge& edge = strip.boundary[e];
+      if (edge.v0 < 0 || edge.v0 >= count || edge.v1 < 0 || edge.v1 >= count)
+        throw InvalidInputException("seams: strip " + std::to_string(strip.id) + " boundary edge " +
+                                    std::to_string(e) + " has a vertex out of range [0, " +
+                                    std::to_string(count) + ")");
+    }
+  }
+}
 
 struct EdgeRef {
   int strip;
   int edge;
 };
 
-struct Partner {
-  int edge;  // global edge index
-  double overlap;
-};
-
-class DisjointSets {
- public:
-  explicit DisjointSets(int n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
-  int find(int x) {
-    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-    return x;
-  }
-  void unite(int x, int y) {
-    x = find(x), y = find(y);
-    if (x != y) parent_[std::max(x, y)] = std::min(x, y);
-  }
-
- private:
-  std::vector<int> parent_;
-};
-
-std::array<double, 6> exact_key(const Vec3& p, const Vec3& q) {
-  std::array<double, 3> a{p.x(), p.y(), p.z()}, b{q.x(), q.y(), q.z()};
-  if (b < a) std::swap(a, b);
-  return {a[0], a[1], a[2], b[0], b[1], b[2]};
+std::vector<EdgeRef> all_edges(const std::vector<FlatStrip>& strips) {
+  std::vector<EdgeRef> refs;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+    for (int e = 0; e < static_cast<int>(strips[s].boundary.size()); ++e) refs.push_back({s, e});
+  return refs;
 }
 
-// Intervals [lo, hi] along the longer edge (a, b) where the shorter edge (r, s) lies on it
-// within `tolerance` * |ab|; the overlap length, 0 when not collinear.
-double collinear_overlap(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1,
-                         double tolerance) {
-  bool p_longer = (p1 - p0).squaredNorm() >= (q1 - q0).squaredNorm();
-  const Vec3& a = p_longer ? p0 : q0;
-  const Vec3& b = p_longer ? p1 : q1;
-  const Vec3& r = p_longer ? q0 : p0;
-  const Vec3& s = p_longer ? q1 : p1;
-  double length = (b - a).norm();
-  if (length == 0.0) return 0.0;
-  Vec3 u = (b - a) / length;
-  double tr = (r - a).dot(u), ts = (s - a).dot(u);
-  if ((r - a - tr * u).norm() > tolerance * length || (s - a - ts * u).norm() > tolerance * length)
-    return 0.0;
-  double overlap = std::min(length, std::max(tr, ts)) - std::max(0.0, std::min(tr, ts));
-  return overlap > tolerance * length ? overlap : 0.0;
+std::int64_t cell_of(double coordinate, double cell) {
+  return static_cast<std::int64_t>(std::floor(std::clamp(coordinate / cell, -1e9, 1e9)));
 }
 
-std::int64_t cell_index(double coordinate, double cell) {
-  return static_cast<std::int64_t>(std::floor(std::clamp(coordinate / cell, -1e6, 1e6)));
+struct CellKeyHash {
+  std::size_t operator()(const std::array<std::int64_t, 3>& k) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t v : k) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+// Splits strip.boundary[edge] at `points` (3D, sorted by `fractions` along the edge).
+// False when no triangle of the strip has the directed edge.
+bool split_edge(FlatStrip& strip, int edge, const std::vector<std::pair<double, Vec3>>& points) {
+  const BoundaryEdge original = strip.boundary[edge];
+  int triangle = -1, corner = -1;
+  for (int f = 0; f < static_cast<int>(strip.triangles.size()) && triangle < 0; ++f) {
+    const Triangle& t = strip.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] == original.v0 && t[(k + 1) % 3] == original.v1) {
+        triangle = f;
+        corner = k;
+        break;
+      }
+    }
+  }
+  if (triangle < 0) return false;
+  const int apex = strip.triangles[triangle][(corner + 2) % 3];
+  const Vec2 a2 = strip.vertices2d[original.v0], b2 = strip.vertices2d[original.v1];
+  const bool with_uvs = strip.uvs.size() == strip.vertices3d.size() && !strip.uvs.empty();
+  std::vector<int> chain{original.v0};
+  for (const auto& [t, point] : points) {
+    chain.push_back(static_cast<int>(strip.vertices3d.size()));
+    strip.vertices3d.push_back(point);
+    strip.vertices2d.push_back(a2 + t * (b2 - a2));
+    if (with_uvs) {
+      strip.uvs.push_back(strip.uvs[original.v0] +
+                          t * (strip.uvs[original.v1] - strip.uvs[original.v0]));
+    }
+  }
+  chain.push_back(original.v1);
+  strip.triangles[triangle] = {chain[0], chain[1], apex};
+  for (std::size_t i = 1; i + 1 < chain.size(); ++i)
+    strip.triangles.push_back({chain[i], chain[i + 1], apex});
+  std::vector<BoundaryEdge> pieces;
+  for (std::size_t i = 0; i + 1 < chain.size(); ++i) {
+    BoundaryEdge piece = original;
+    piece.v0 = chain[i];
+    piece.v1 = chain[i + 1];
+    pieces.push_back(piece);
+  }
+  strip.boundary.erase(strip.boundary.begin() + edge);
+  strip.boundary.insert(strip.boundary.begin() + edge, pieces.begin(), pieces.end());
+  return true;
 }
 
 }  // namespace
 
+int split_t_junctions(std::vector<FlatStrip>& strips, const SeamOptions& options) {
+  check_ranges(strips);
+  const std::vector<EdgeRef> refs = all_edges(strips);
+  auto start = [&](const EdgeRef& r) -> const Vec3& {
+    return strips[r.strip].vertices3d[strips[r.strip].boundary[r.edge].v0];
+  };
+  auto end = [&](const EdgeRef& r) -> const Vec3& {
+    return strips[r.strip].vertices3d[strips[r.strip].boundary[r.edge].v1];
+  };
+  std::map<EdgeKey, int> directed;
+  for (const EdgeRef& r : refs) ++directed[directed_key(start(r), end(r))];
+  std::vector<int> unmatched;
+  double length_sum = 0.0;
+  for (int g = 0; g < static_cast<int>(refs.size()); ++g) {
+    if (directed.count(directed_key(end(refs[g]), start(refs[g])))) continue;
+    const double length = (end(refs[g]) - start(refs[g])).norm();
+    if (!(length > 0.0)) continue;
+    unmatched.push_back(g);
+    length_sum += length;
+  }
+  if (unmatched.size() < 2) return 0;
+
+  // The end points of unmatched edges, once each, in a uniform grid.
+  std::vector<Vec3> points;
+  {
+    std::map<PointKey, int> seen;
+    for (int g : unmatched) {
+      for (const Vec3* p : {&start(refs[g]), &end(refs[g])}) {
+        if (seen.emplace(key_of(*p), static_cast<int>(points.size())).second) points.push_back(*p);
+      }
+    }
+  }
+  const double cell = length_sum / static_cast<double>(unmatched.size());
+  std::unordered_map<std::array<std::int64_t, 3>, std::vector<int>, CellKeyHash> grid;
+  for (int i = 0; i < static_cast<int>(points.size()); ++i)
+    grid[{cell_of(points[i].x(), cell), cell_of(points[i].y(), cell), cell_of(points[i].z(), cell)}]
+        .push_back(i);
+
+  // Per strip: edge index -> the points on it, with their fractions along it.
+  std::vector<std::map<int, std::vector<std::pair<double, Vec3>>>> splits(strips.size());
+  constexpr std::int64_t kMaxCells = 4096;
+  for (int g : unmatched) {
+    const Vec3& p = start(refs[g]);
+    const Vec3& q = end(refs[g]);
+    const Vec3 d = q - p;
+    const double length2 = d.squaredNorm();
+    const double length = std::sqrt(length2);
+    const double reach = options.t_junction_tolerance * length;
+    std::vector<std::pair<double, Vec3>> found;
+    auto consider = [&](int i) {
+      const Vec3& v = points[i];
+      const double t = (v - p).dot(d) / length2;
+      if (!(t * length > reach && (1.0 - t) * length > reach)) return;
+      if ((v - p - t * d).norm() > reach) return;
+      found.emplace_back(t, v);
+    };
+    const Vec3 lo = p.cwiseMin(q) - Vec3::Constant(reach),
+               hi = p.cwiseMax(q) + Vec3::Constant(reach);
+    std::array<std::int64_t, 3> c0{cell_of(lo.x(), cell), cell_of(lo.y(), cell),
+                                   cell_of(lo.z(), cell)};
+    std::array<std::int64_t, 3> c1{cell_of(hi.x(), cell), cell_of(hi.y(), cell),
+                                   cell_of(hi.z(), cell)};
+    const std::int64_t cells = (c1[0] - c0[0] + 1) * (c1[1] - c0[1] + 1) * (c1[2] - c0[2] + 1);
+    if (cells > kMaxCells) {
+      for (int i = 0; i < static_cast<int>(points.size()); ++i) consider(i);
+    } else {
+      for (auto x = c0[0]; x <= c1[0]; ++x)
+        for (auto y = c0[1]; y <= c1[1]; ++y)
+          for (auto z = c0[2]; z <= c1[2]; ++z) {
+            const auto it = grid.find({x, y, z});
+            if (it == grid.end()) continue;
+            for (int i : it->second) consider(i);
+          }
+    }
+    if (found.empty()) continue;
+    std::sort(found.begin(), found.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    splits[refs[g].strip][refs[g].edge] = std::move(found);
+  }
+
+  int inserted = 0;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+    // Last edge first, so the indices of the edges still to split stay valid.
+    for (auto it = splits[s].rbegin(); it != splits[s].rend(); ++it) {
+      if (split_edge(strips[s], it->first, it->second))
+        inserted += static_cast<int>(it->second.size());
+    }
+  }
+  return inserted;
+}
+
 void label_seams(std::vector<FlatStrip>& strips, const SeamOptions& options) {
-  std::vector<EdgeRef> refs;
+  check_ranges(strips);
+  (void)options;
+  const std::vector<EdgeRef> refs = all_edges(strips);
+  const int edge_count = static_cast<int>(refs.size());
+  std::vector<int> first_of_strip(strips.size() + 1, 0);
+  for (std::size_t s = 0; s < strips.size(); ++s)
+    first_of_strip[s + 1] = first_of_strip[s] + static_cast<int>(strips[s].boundary.size());
+  auto edge = [&](int g) -> BoundaryEdge& { return strips[refs[g].strip].boundary[refs[g].edge]; };
+  auto start = [&](int g) -> const Vec3& { return strips[refs[g].strip].vertices3d[edge(g).v0]; };
+  auto end = [&](int g) -> const Vec3& { return strips[refs[g].strip].vertices3d[edge(g).v1]; };
+
+  // Partners: edges with the same two end points, the other way first.
+  std::vector<int> partner(edge_count, -1);
+  {
+    std::map<EdgeKey, std::vector<int>> by_ends;  // undirected: the smaller point first
+    for (int g = 0; g < edge_count; ++g) {
+      const PointKey a = key_of(start(g)), b = key_of(end(g));
+      by_ends[a < b ? EdgeKey{a[0], a[1], a[2], b[0], b[1], b[2]}
+                    : EdgeKey{b[0], b[1], b[2], a[0], a[1], a[2]}]
+          .push_back(g);
+    }
+    for (const auto& [key, group] : by_ends) {
+      if (group.size() < 2) continue;
+      for (bool opposite : {true, false}) {
+        for (std::size_t i = 0; i < group.size(); ++i) {
+          if (partner[group[i]] >= 0) continue;
+          for (std::size_t j = i + 1; j < group.size(); ++j) {
+            if (partner[group[j]] >= 0) continue;
+            const bool reversed = start(group[j]) == end(group[i]);
+            if (reversed != opposite) continue;
+            if (start(group[i]) == end(group[i])) continue;  // zero length: never glued
+            partner[group[i]] = group[j];
+            partner[group[j]] = group[i];
+            break;
+          }
+        }
+      }
+    }
+  }
+
+  // Chains: an edge and the next one along its strip's boundary share a label when both are
+  // glued to one strip where their partners are consecutive too.
+  UnionFind chains(static_cast<std::size_t>(edge_count));
+  for (int g = 0; g < edge_count; ++g)
+    if (partner[g] >= 0) chains.unite(g, partner[g]);
   for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
     const FlatStrip& strip = strips[s];
-    const int vertex_count = static_cast<int>(strip.vertices3d.size());
-    for (int e = 0; e < static_cast<int>(strip.boundary.size()); ++e) {
-      const BoundaryEdge& edge = strip.boundary[e];
-      if (edge.v0 < 0 || edge.v0 >= vertex_count || edge.v1 < 0 || edge.v1 >= vertex_count)
-        throw InvalidInputException("label_seams: strip " + std::to_string(strip.id) +
-                                    " boundary edge " + std::to_string(e) +
-                                    " has a vertex out of range [0, " +
-                                    std::to_string(vertex_count) + ")");
-      refs.push_back({s, e});
-    }
-  }
-  const int edge_count = static_cast<int>(refs.size());
-  auto boundary = [&](int g) -> BoundaryEdge& {
-    return strips[refs[g].strip].boundary[refs[g].edge];
-  };
-  auto start = [&](int g) -> const Vec3& {
-    return strips[refs[g].strip].vertices3d[boundary(g).v0];
-  };
-  auto end = [&](int g) -> const Vec3& { return strips[refs[g].strip].vertices3d[boundary(g).v1]; };
-
-  std::vector<std::vector<Partner>> partners(edge_count);
-  std::vector<bool> seam(edge_count, false);
-  DisjointSets sets(edge_count);
-
-  // Exact matches by endpoints.
-  std::map<std::array<double, 6>, std::vector<int>> groups;
-  for (int g = 0; g < edge_count; ++g) groups[exact_key(start(g), end(g))].push_back(g);
-  for (const auto& [key, group] : groups) {
-    if (group.size() < 2) continue;
-    const int n = static_cast<int>(group.size());
-    std::vector<int> pair(n, -1);
-    for (bool opposite : {true, false}) {
-      for (int i = 0; i < n; ++i) {
-        for (int j = i + 1; j < n && pair[i] < 0; ++j) {
-          if (pair[j] >= 0) continue;
-          bool reversed = start(group[j]) == end(group[i]) && end(group[j]) == start(group[i]);
-          if (reversed != opposite) continue;
-          pair[i] = j, pair[j] = i;
-        }
-      }
-    }
-    for (int i = 0; i < n; ++i) {
-      int other = pair[i] >= 0 ? pair[i] : (i == 0 ? 1 : 0);
-      int g = group[i];
-      partners[g].push_back({group[other], (end(g) - start(g)).norm()});
-      seam[g] = true;
-      sets.unite(g, group[0]);
-    }
-  }
-
-  // Collinear matches among the edges still unmatched, found through a uniform 3D grid.
-  if (options.match_collinear) {
-    std::vector<int> unmatched;
-    double length_sum = 0.0;
-    for (int g = 0; g < edge_count; ++g) {
-      double length = (end(g) - start(g)).norm();
-      if (seam[g] || length == 0.0) continue;
-      unmatched.push_back(g);
-      length_sum += length;
-    }
-    if (unmatched.size() >= 2) {
-      const double cell = length_sum / unmatched.size();
-      constexpr std::int64_t kMaxCells = 512;
-      std::map<std::array<std::int64_t, 3>, std::vector<int>> grid;
-      std::vector<int> oversized;
-      std::vector<std::array<std::int64_t, 6>> ranges(unmatched.size());
-      for (std::size_t k = 0; k < unmatched.size(); ++k) {
-        Vec3 lo = start(unmatched[k]).cwiseMin(end(unmatched[k]));
-        Vec3 hi = start(unmatched[k]).cwiseMax(end(unmatched[k]));
-        auto& r = ranges[k];
-        for (int d = 0; d < 3; ++d)
-          r[d] = cell_index(lo[d], cell), r[d + 3] = cell_index(hi[d], cell);
-        if ((r[3] - r[0] + 1) * (r[4] - r[1] + 1) * (r[5] - r[2] + 1) > kMaxCells) {
-          oversized.push_back(static_cast<int>(k));
-          continue;
-        }
-        for (auto x = r[0]; x <= r[3]; ++x)
-          for (auto y = r[1]; y <= r[4]; ++y)
-            for (auto z = r[2]; z <= r[5]; ++z) grid[{x, y, z}].push_back(static_cast<int>(k));
-      }
-      std::vector<std::vector<Partner>> candidates(unmatched.size());
-      std::vector<int> seen(unmatched.size(), -1);
-      auto consider = [&](int k, int m) {
-        if (m <= k || seen[m] == k) return;
-        seen[m] = k;
-        int g = unmatched[k], h = unmatched[m];
-        double overlap =
-            collinear_overlap(start(g), end(g), start(h), end(h), options.collinear_tolerance);
-        if (overlap <= 0.0) return;
-        candidates[k].push_back({m, overlap});
-        candidates[m].push_back({k, overlap});
-      };
-      for (int k = 0; k < static_cast<int>(unmatched.size()); ++k) {
-        const auto& r = ranges[k];
-        for (int m : oversized) consider(k, m);
-        if ((r[3] - r[0] + 1) * (r[4] - r[1] + 1) * (r[5] - r[2] + 1) > kMaxCells) {
-          for (int m = k + 1; m < static_cast<int>(unmatched.size()); ++m) consider(k, m);
-          continue;
-        }
-        for (auto x = r[0]; x <= r[3]; ++x)
-          for (auto y = r[1]; y <= r[4]; ++y)
-            for (auto z = r[2]; z <= r[5]; ++z) {
-              auto it = grid.find({x, y, z});
-              if (it == grid.end()) continue;
-              for (int m : it->second) consider(k, m);
-            }
-      }
-      // An edge is a seam when the union of its partners' intervals covers it.
-      std::vector<bool> covered(unmatched.size(), false);
-      for (std::size_t k = 0; k < unmatched.size(); ++k) {
-        int g = unmatched[k];
-        Vec3 a = start(g);
-        double length = (end(g) - a).norm();
-        Vec3 u = (end(g) - a) / length;
-        std::vector<std::pair<double, double>> intervals;
-        for (const Partner& p : candidates[k]) {
-          int h = unmatched[p.edge];
-          double t0 = (start(h) - a).dot(u), t1 = (end(h) - a).dot(u);
-          intervals.push_back(
-              {std::max(0.0, std::min(t0, t1)), std::min(length, std::max(t0, t1))});
-        }
-        std::sort(intervals.begin(), intervals.end());
-        double reach = 0.0;
-        for (const auto& [lo, hi] : intervals) {
-          if (lo > reach + options.collinear_tolerance * length) break;
-          reach = std::max(reach, hi);
-        }
-        covered[k] = reach >= length * (1.0 - options.collinear_tolerance);
-      }
-      for (std::size_t k = 0; k < unmatched.size(); ++k) {
-        if (!covered[k]) continue;
-        int g = unmatched[k];
-        seam[g] = true;
-        for (const Partner& p : candidates[k]) {
-          partners[g].push_back({unmatched[p.edge], p.overlap});
-          if (covered[p.edge]) sets.unite(g, unmatched[p.edge]);
-        }
-      }
-    }
-  }
-
-  // Neighbour: the partner strip covering most of the edge (the first on ties).
-  std::vector<int> neighbour_index(edge_count, -1);
-  for (int g = 0; g < edge_count; ++g) {
-    double best = -1.0;
-    for (const Partner& p : partners[g])
-      if (p.overlap > best) best = p.overlap, neighbour_index[g] = refs[p.edge].strip;
-  }
-
-  // One label per shared boundary: join consecutive seam edges whose partners touch at the
-  // same 3D point in the same strip.
-  auto touch = [&](int g, int h, const Vec3& junction) {
-    for (const Partner& p : partners[g]) {
-      for (const Partner& q : partners[h]) {
-        if (refs[p.edge].strip != refs[q.edge].strip) continue;
-        const FlatStrip& other = strips[refs[p.edge].strip];
-        const BoundaryEdge& pe = boundary(p.edge);
-        const BoundaryEdge& qe = boundary(q.edge);
-        for (int w : {pe.v0, pe.v1})
-          if ((w == qe.v0 || w == qe.v1) && other.vertices3d[w] == junction) return true;
-      }
-    }
-    return false;
-  };
-  for (int s = 0, first = 0; s < static_cast<int>(strips.size()); ++s) {
-    const FlatStrip& strip = strips[s];
-    const int count = static_cast<int>(strip.boundary.size());
     std::unordered_multimap<int, int> outgoing;
-    for (int e = 0; e < count; ++e) outgoing.emplace(strip.boundary[e].v0, first + e);
-    for (int e = 0; e < count; ++e) {
-      int g = first + e;
-      if (!seam[g]) continue;
-      auto [begin, stop] = outgoing.equal_range(strip.boundary[e].v1);
-      for (auto it = begin; it != stop; ++it) {
-        int h = it->second;
-        if (!seam[h] || neighbour_index[h] != neighbour_index[g] || sets.find(g) == sets.find(h))
-          continue;
-        if (touch(g, h, strip.vertices3d[strip.boundary[e].v1])) sets.unite(g, h);
+    for (int e = 0; e < static_cast<int>(strip.boundary.size()); ++e)
+      outgoing.emplace(strip.boundary[e].v0, first_of_strip[s] + e);
+    for (int e = 0; e < static_cast<int>(strip.boundary.size()); ++e) {
+      const int g = first_of_strip[s] + e;
+      if (partner[g] < 0) continue;
+      const auto [from, to] = outgoing.equal_range(strip.boundary[e].v1);
+      for (auto it = from; it != to; ++it) {
+        const int h = it->second;
+        if (partner[h] < 0 || refs[partner[h]].strip != refs[partner[g]].strip) continue;
+        if (edge(partner[h]).v1 != edge(partner[g]).v0) continue;
+        chains.unite(g, h);
       }
     }
-    first += count;
   }
 
   std::vector<int> label_of(edge_count, 0);
   int labels = 0;
   for (int g = 0; g < edge_count; ++g) {
-    BoundaryEdge& edge = boundary(g);
-    if (!seam[g]) {
-      edge.kind = EdgeKind::Open;
-      edge.neighbour_strip = -1;
-      edge.label.clear();
+    BoundaryEdge& e = edge(g);
+    if (partner[g] < 0) {
+      e.kind = EdgeKind::Open;
+      e.neighbour_strip = -1;
+      e.partner_edge = -1;
+      e.label.clear();
       continue;
     }
-    int root = sets.find(g);
+    const std::size_t root = chains.find(g);
     if (label_of[root] == 0) label_of[root] = ++labels;
-    edge.kind = EdgeKind::Seam;
-    edge.neighbour_strip = strips[neighbour_index[g]].id;
-    edge.label = "A" + std::to_string(label_of[root]);
+    e.kind = EdgeKind::Seam;
+    e.neighbour_strip = strips[refs[partner[g]].strip].id;
+    e.partner_edge = refs[partner[g]].edge;
+    e.label = "A" + std::to_string(label_of[root]);
   }
+}
+
+std::vector<SeamChain> labelled_chains(const std::vector<FlatStrip>& strips) {
+  std::map<int, int> index_of_id;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) index_of_id[strips[s].id] = s;
+  std::vector<SeamChain> chains;
+  std::map<std::string, int> chain_of_label;
+  std::vector<std::vector<char>> taken(strips.size());
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+    taken[s].assign(strips[s].boundary.size(), 0);
+  // Walks one side: from edge e of strip s backwards to the chain's first edge, then forwards,
+  // never stepping onto an edge's own partner (the two sides of a cone's opened ruling meet
+  // at the apex).
+  auto side_of = [&](int s, int e) {
+    const FlatStrip& strip = strips[s];
+    const std::string& label = strip.boundary[e].label;
+    std::unordered_multimap<int, int> outgoing, incoming;
+    for (int k = 0; k < static_cast<int>(strip.boundary.size()); ++k) {
+      if (strip.boundary[k].kind != EdgeKind::Seam || strip.boundary[k].label != label) continue;
+      outgoing.emplace(strip.boundary[k].v0, k);
+      incoming.emplace(strip.boundary[k].v1, k);
+    }
+    auto glued = [&](int a, int b) {
+      return strip.boundary[a].neighbour_strip == strip.id && strip.boundary[a].partner_edge == b;
+    };
+    int first = e;
+    for (std::size_t steps = 0; steps < strip.boundary.size(); ++steps) {
+      const auto it = incoming.find(strip.boundary[first].v0);
+      if (it == incoming.end() || it->second == e || glued(it->second, first)) break;
+      first = it->second;
+    }
+    SeamSide side;
+    side.strip = strip.id;
+    for (int k = first; k >= 0 && !taken[s][k];) {
+      taken[s][k] = 1;
+      side.edges.push_back(k);
+      const auto it = outgoing.find(strip.boundary[k].v1);
+      k = it == outgoing.end() || glued(k, it->second) ? -1 : it->second;
+    }
+    return side;
+  };
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+    for (int e = 0; e < static_cast<int>(strips[s].boundary.size()); ++e) {
+      const BoundaryEdge& edge = strips[s].boundary[e];
+      if (edge.kind != EdgeKind::Seam || taken[s][e]) continue;
+      const auto found = chain_of_label.find(edge.label);
+      if (found == chain_of_label.end()) {
+        SeamChain chain;
+        chain.label = edge.label;
+        chain.sides[0] = side_of(s, e);
+        // The other side starts at the partner of the side's last edge.
+        const int last = chain.sides[0].edges.back();
+        const BoundaryEdge& tail = strips[s].boundary[last];
+        const auto other = index_of_id.find(tail.neighbour_strip);
+        if (other != index_of_id.end() && tail.partner_edge >= 0 &&
+            !taken[other->second][tail.partner_edge]) {
+          chain.sides[1] = side_of(other->second, tail.partner_edge);
+        }
+        chain_of_label[edge.label] = static_cast<int>(chains.size());
+        chains.push_back(std::move(chain));
+      } else {
+        // A chain whose two sides lie on one loop of one strip and meet (a closed self-seam):
+        // the rest of it.
+        SeamSide more = side_of(s, e);
+        SeamSide& side = chains[found->second].sides[1];
+        if (side.strip < 0) side.strip = more.strip;
+        side.edges.insert(side.edges.end(), more.edges.begin(), more.edges.end());
+      }
+    }
+  }
+  return chains;
 }
 
 }  // namespace papercraft

@@ -46,6 +46,7 @@ struct BoundaryEdge {
   EdgeKind kind = EdgeKind::Cut;
   int neighbour_strip = -1;  // id of the flat strip on the other side of a seam
   std::string label;         // the same label is printed on both sides of a seam
+  int partner_edge = -1;     // index of the glued edge in that strip's boundary
 };
 
 /// One piece of paper: a developed strip. `vertices3d` and `vertices2d` share indexing;

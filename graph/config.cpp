@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <set>
@@ -85,8 +86,29 @@ class Parser {
       fail(ConfigMark{e.mark.line + 1, e.mark.column + 1}, "invalid YAML: " + e.msg);
     }
     if (!root.IsDefined() || root.IsNull()) fail(ConfigMark{1, 1}, "the configuration is empty");
-    check_keys(root, "the configuration", {"description", "tolerance", "threads", "nodes"},
+    check_keys(root, "the configuration",
+               {"description", "tolerance", "threads", "height_mm", "scale", "min_width_mm",
+                "min_area_mm2", "nodes"},
                {"nodes"});
+    auto paper = [&](const char* key, bool zero_ok, const std::string& meaning) {
+      std::optional<double> value;
+      const YAML::Node node = root[key];
+      if (!node) return value;
+      const std::string text = scalar(node, meaning);
+      double number = 0.0;
+      const std::size_t used = parse_number_prefix(text, number);
+      if (used == 0 || used != text.size() || !std::isfinite(number))
+        fail(node, std::string(key) + ": expected a number (" + meaning + "), got '" + text + "'");
+      if (zero_ok ? number < 0.0 : number <= 0.0)
+        fail(node, std::string(key) + " must be " + (zero_ok ? "at least 0" : "greater than 0") +
+                       " (" + meaning + "), got " + text);
+      value = number;
+      return value;
+    };
+    config.height_mm = paper("height_mm", false, "the model's largest side on paper, in mm");
+    config.scale = paper("scale", false, "mm on paper per model unit");
+    config.min_width_mm = paper("min_width_mm", true, "the narrowest piece, in mm; 0: no bound");
+    config.min_area_mm2 = paper("min_area_mm2", true, "the smallest piece, in mm^2; 0: no bound");
     if (root["tolerance"]) {
       try {
         config.tolerance = parse_tolerance(scalar(root["tolerance"], "a tolerance like 2%"));

@@ -5,6 +5,9 @@
 //
 //   tolerance: 2%
 //   threads: 0
+//   height_mm: 200        # paper: the largest side printed this long (or scale: mm per unit)
+//   min_width_mm: 5       # no piece narrower (but for its tips)
+//   min_area_mm2: 100     # no piece smaller
 //   nodes:
 //     select:    {impl: select.geodesic, to: [ruled]}
 //     hausdorff: {impl: hausdorff.bounded, params: {precision: 0.05},
@@ -48,6 +51,8 @@ struct PipelineConfig {
   std::string text;
   std::optional<ToleranceSpec> tolerance;
   std::optional<int> threads;
+  /// Paper: each key given in the config (height_mm, scale, min_width_mm, min_area_mm2).
+  std::optional<double> height_mm, scale, min_width_mm, min_area_mm2;
   std::vector<NodeConfig> nodes;
   std::vector<EdgeConfig> edges;
   int entry = -1;  // the node that takes Job

@@ -39,10 +39,12 @@ struct ModelRecord {
   double hausdorff_bound = 0.0;  // the largest upper bound over the 3D strips
   bool certified = false;        // every strip's bound certified (none sampled)
 
+  /// The framework, with the tolerance: mm on paper per model unit.
+  double mm_per_unit = 0.0;
+
   /// layout: the pages.
   int pages = 0;
   int shelf_pages = 0;
-  double mm_per_unit = 0.0;
 
   /// export: the largest distance of an input vertex to the approximation (error.ply).
   double max_vertex_distance = 0.0;

@@ -12,11 +12,24 @@ ModelRun::ModelRun(int index_in, std::filesystem::path input, std::string name_i
 
 void ModelRun::set_input(const MeshSummary& input) {
   const double tolerance = settings->tolerance.absolute(input.largest_side);
+  const double mm_per_unit = settings->paper.mm_per_unit(input.largest_side);
   std::lock_guard lock(mutex_);
   record_.loaded = true;
   record_.input = input;
   record_.tolerance = tolerance;
+  record_.mm_per_unit = mm_per_unit;
   tolerance_.store(tolerance);
+  mm_per_unit_.store(mm_per_unit);
+}
+
+PieceLimits ModelRun::piece_limits() const {
+  const double scale = mm_per_unit();
+  PieceLimits limits;
+  if (scale > 0.0) {
+    limits.min_width = settings->paper.min_width_mm / scale;
+    limits.min_area = settings->paper.min_area_mm2 / (scale * scale);
+  }
+  return limits;
 }
 
 void ModelRun::fail(const std::string& node, const std::string& message, bool internal) {

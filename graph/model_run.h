@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/piece_limits.h"
 #include "graph/model_record.h"
 #include "graph/tolerance.h"
 
@@ -26,8 +27,7 @@ struct RunSettings {
   int threads = 0;          // 0: all cores
   std::string config_file;  // path or "<builtin>"
   std::string config_text;  // the YAML actually used (copied into report.json)
-  double height_mm = 0.0;   // 0: use scale or the layout default
-  double scale = 0.0;       // mm per model unit; 0: unset
+  PaperSpec paper;
 };
 
 struct NodeStatistics {
@@ -54,8 +54,15 @@ struct ModelRun {
   /// Messages of this model currently in flight (framework-managed).
   std::atomic<long> in_flight{0};
 
-  /// Records the loaded input and fixes the absolute tolerance from the run's tolerance and
-  /// the input's largest side. Framework-only: called once, when the entry node emits Model.
+  /// mm on paper per model unit, fixed with the tolerance (set_input); 0 before.
+  double mm_per_unit() const { return mm_per_unit_.load(); }
+
+  /// The run's min_width_mm and min_area_mm2 in model units (0 before set_input).
+  PieceLimits piece_limits() const;
+
+  /// Records the loaded input and fixes the absolute tolerance and the print scale from the
+  /// run's settings and the input's largest side. Framework-only: called once, when the
+  /// entry node emits Model.
   void set_input(const MeshSummary& input);
 
   /// Record the first error; later messages of this model are dropped. `internal` marks a
@@ -89,6 +96,7 @@ struct ModelRun {
  private:
   mutable std::mutex mutex_;
   std::atomic<double> tolerance_{0.0};
+  std::atomic<double> mm_per_unit_{0.0};
   std::atomic<bool> failed_{false};
   bool internal_ = false;
   std::string error_;

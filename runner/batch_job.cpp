@@ -66,8 +66,9 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
                           std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg);
   }
   if (!root.IsMap()) fail(path, root, "expected a map with 'inputs' and 'output'");
-  const std::vector<std::string> allowed = {"inputs",  "output",    "config", "tolerance",
-                                            "threads", "height_mm", "shard"};
+  const std::vector<std::string> allowed = {"inputs",       "output",       "config",
+                                            "tolerance",    "threads",      "height_mm",
+                                            "min_width_mm", "min_area_mm2", "shard"};
   std::set<std::string> seen;
   for (auto it = root.begin(); it != root.end(); ++it) {
     const std::string key = it->first.Scalar();
@@ -75,7 +76,8 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
       fail(path, it->first,
            "unknown key '" + key +
-               "' (expected inputs, output, config, tolerance, threads, height_mm, shard)");
+               "' (expected inputs, output, config, tolerance, threads, height_mm, "
+               "min_width_mm, min_area_mm2, shard)");
     }
   }
   if (!root["inputs"]) fail(path, root, "missing key 'inputs'");
@@ -127,7 +129,12 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
     }
   };
   if (root["threads"]) job.threads = static_cast<int>(number("threads", 0));
-  if (root["height_mm"]) job.height_mm = number("height_mm", 0);
+  if (root["height_mm"]) {
+    job.height_mm = number("height_mm", 0);
+    if (*job.height_mm <= 0) fail(path, root["height_mm"], "expected a height_mm > 0");
+  }
+  if (root["min_width_mm"]) job.min_width_mm = number("min_width_mm", 0);
+  if (root["min_area_mm2"]) job.min_area_mm2 = number("min_area_mm2", 0);
   if (root["shard"]) {
     const std::string shard = scalar(path, root["shard"], "a shard like 1/4");
     const auto slash = shard.find('/');

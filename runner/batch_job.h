@@ -7,6 +7,8 @@
 //   tolerance: 2%                             # optional; overrides the config
 //   threads: 0                                # optional; 0 = all cores
 //   height_mm: 150                            # optional
+//   min_width_mm: 5                           # optional
+//   min_area_mm2: 100                         # optional
 //   shard: 1/4                                # optional: this machine runs every 4th input from
 //   the 1st
 
@@ -25,7 +27,9 @@ struct BatchJob {
   std::optional<std::filesystem::path> config;
   std::optional<ToleranceSpec> tolerance;
   std::optional<int> threads;
-  double height_mm = 0.0;
+  std::optional<double> height_mm;
+  std::optional<double> min_width_mm;
+  std::optional<double> min_area_mm2;
   int shard_index = 0;  // 0-based
   int shard_count = 1;
 };

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -82,8 +83,9 @@ struct RunRequest {
   std::string tolerance;    // empty: from the config
   std::filesystem::path output = "out";
   int threads = -1;  // -1: from the config
-  double height_mm = 0.0;
-  double scale = 0.0;
+  // Paper: each set only when given (command line or job file); else the config's, else the
+  // defaults of PaperSpec.
+  std::optional<double> height_mm, scale, min_width_mm, min_area_mm2;
 };
 
 int execute(const RunRequest& request, const CommonOptions& common) {
@@ -105,8 +107,18 @@ int execute(const RunRequest& request, const CommonOptions& common) {
   settings->threads = request.threads >= 0 ? request.threads : config.threads.value_or(0);
   settings->config_file = config.file;
   settings->config_text = config.text;
-  settings->height_mm = request.height_mm;
-  settings->scale = request.scale;
+  PaperSpec& paper = settings->paper;
+  if (config.height_mm) paper.height_mm = *config.height_mm;
+  if (config.scale) paper.scale = *config.scale;
+  if (config.min_width_mm) paper.min_width_mm = *config.min_width_mm;
+  if (config.min_area_mm2) paper.min_area_mm2 = *config.min_area_mm2;
+  if (request.height_mm) {
+    paper.height_mm = *request.height_mm;
+    paper.scale = 0.0;  // a height on the command line wins over a scale in the config
+  }
+  if (request.scale) paper.scale = *request.scale;
+  if (request.min_width_mm) paper.min_width_mm = *request.min_width_mm;
+  if (request.min_area_mm2) paper.min_area_mm2 = *request.min_area_mm2;
 
   PipelineOptions options;
   options.threads = settings->threads;
@@ -140,8 +152,9 @@ int execute(const RunRequest& request, const CommonOptions& common) {
   std::cout << results.size() - failed << " passed, " << failed << " failed; summary in "
             << (settings->output_dir / "batch.json").string() << "\n";
   if (internal) {
-    spdlog::critical("internal error: a model failed on a bug of papercraft (see above); please "
-                     "report it");
+    spdlog::critical(
+        "internal error: a model failed on a bug of papercraft (see above); please "
+        "report it");
     return kExitInternal;
   }
   return failed > 0 ? kExitModelFailed : kExitOk;
@@ -222,9 +235,19 @@ int main_impl(int argc, char** argv) {
   auto* height = run->add_option("--height", height_text,
                                  "size of the model's largest side on paper: 200, 200mm, 20cm, "
                                  "8in (a bare number is mm)");
-  run->add_option("--scale", run_request.scale, "mm on paper per model unit")
-      ->check(CLI::PositiveNumber)
-      ->excludes(height);
+  double scale = 0.0;
+  auto* scale_option = run->add_option("--scale", scale, "mm on paper per model unit")
+                           ->check(CLI::PositiveNumber)
+                           ->excludes(height);
+  std::string min_width_text;
+  run->add_option("--min-width", min_width_text,
+                  "no piece narrower than this on paper, but for its tips: 5, 5mm, 0.5cm "
+                  "(0: no bound; default 5 mm)");
+  double min_area = 0.0;
+  auto* min_area_option =
+      run->add_option("--min-area", min_area,
+                      "no piece smaller than this many mm^2 on paper (0: no bound; default 100)")
+          ->check(CLI::NonNegativeNumber);
 
   std::string job_file;
   auto* batch = app.add_subcommand("batch", "run a batch job file (YAML: inputs, output, ...)");
@@ -267,6 +290,15 @@ int main_impl(int argc, char** argv) {
           throw InvalidInputException(std::string("--height: ") + e.what());
         }
       }
+      if (*scale_option) run_request.scale = scale;
+      if (!min_width_text.empty()) {
+        try {
+          run_request.min_width_mm = min_width_text == "0" ? 0.0 : parse_length_mm(min_width_text);
+        } catch (const std::invalid_argument& e) {
+          throw InvalidInputException(std::string("--min-width: ") + e.what());
+        }
+      }
+      if (*min_area_option) run_request.min_area_mm2 = min_area;
       return execute(run_request, common);
     }
     if (*batch) {
@@ -278,6 +310,8 @@ int main_impl(int argc, char** argv) {
       request.output = job.output;
       request.threads = batch_threads >= 0 ? batch_threads : job.threads.value_or(-1);
       request.height_mm = job.height_mm;
+      request.min_width_mm = job.min_width_mm;
+      request.min_area_mm2 = job.min_area_mm2;
       if (job.shard_count > 1) {
         spdlog::info("shard {}/{}: {} of {} inputs", job.shard_index + 1, job.shard_count,
                      request.inputs.size(), job.inputs.size());

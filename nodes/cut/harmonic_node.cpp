@@ -71,7 +71,8 @@ void register_cut_harmonic(Registry& registry) {
           const Part& parent = rejected.candidate->part;
           std::vector<Mesh> pieces =
               cut_rejected_piece(*parent.mesh, *rejected.candidate, rejected.verdict, parent.depth,
-                                 in.model->tolerance(), refine, parent.path);
+                                 in.model->tolerance(), refine, parent.path,
+                                 in.model->piece_limits());
           in.model->update([](ModelRecord& record) { ++record.cuts; });
           for (std::size_t i = 0; i < pieces.size(); ++i) {
             Part part;

@@ -81,7 +81,16 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
     attempts.push_back({true, true});
   }
   // Slivers are refused first; on a small part where nothing else splits, any split is
-  // still progress.
+  // still progress. With limits, a cut that makes progress but leaves a piece too narrow or
+  // too small is remembered, and the nearest iso-values of its field are tried first.
+  WitnessCut fallback;
+  double fallback_shortfall = std::numeric_limits<double>::infinity();
+  auto shortfall_of = [&](const std::vector<Mesh>& pieces) {
+    double worst = 0.0;
+    for (const Mesh& piece : pieces)
+      worst = std::max(worst, piece_shortfall(piece, options.limits));
+    return worst;
+  };
   for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
     for (const Attempt& attempt : attempts) {
       const Eigen::VectorXd* field = attempt.across ? across() : &f;
@@ -92,10 +101,32 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
               : (attempt.across ? std::clamp(field_value_at(part, *field, witness), lo, hi)
                                 : f_witness);
       std::vector<Mesh> pieces = cut_along_isoline(part, *field, value, options.cut);
-      if (makes_progress(part, pieces, area, min_fraction)) {
-        return {std::move(pieces), value, attempt.across};
+      if (!makes_progress(part, pieces, area, min_fraction)) continue;
+      if (!options.limits.active()) return {std::move(pieces), value, attempt.across};
+      double shortfall = shortfall_of(pieces);
+      if (shortfall == 0.0) return {std::move(pieces), value, attempt.across};
+      if (shortfall < fallback_shortfall) {
+        fallback_shortfall = shortfall;
+        fallback = {std::move(pieces), value, attempt.across};
+      }
+      // The nearest iso-values of this field, alternately on either side.
+      for (int k = 1; options.limit_step > 0; ++k) {
+        const double below = value - k * options.limit_step, above = value + k * options.limit_step;
+        if (below < lo && above > hi) break;
+        for (const double near : {below, above}) {
+          if (near < lo || near > hi) continue;
+          std::vector<Mesh> moved = cut_along_isoline(part, *field, near, options.cut);
+          if (!makes_progress(part, moved, area, min_fraction)) continue;
+          shortfall = shortfall_of(moved);
+          if (shortfall == 0.0) return {std::move(moved), near, attempt.across};
+          if (shortfall < fallback_shortfall) {
+            fallback_shortfall = shortfall;
+            fallback = {std::move(moved), near, attempt.across};
+          }
+        }
       }
     }
+    if (!fallback.pieces.empty()) return fallback;
   }
   return {};
 }

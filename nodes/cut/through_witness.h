@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "core/piece_limits.h"
 #include "nodes/cut/harmonic.h"
 
 namespace papercraft {
@@ -22,6 +23,12 @@ struct WitnessCutOptions {
   double margin = 0.05;
   /// A cut is only taken if its smallest piece has at least this fraction of the area.
   double min_piece_fraction = 0.01;
+  /// Pieces a person can cut and glue. A cut that would leave a narrower or smaller piece
+  /// is moved to the nearest iso-value (of the same field, then of the other) whose pieces
+  /// all meet the limits; when none does, the cut whose worst piece falls least short of them.
+  PieceLimits limits;
+  /// Spacing of the iso-values tried next to a cut that breaks the limits.
+  double limit_step = 0.05;
 };
 
 struct WitnessCut {
@@ -32,7 +39,8 @@ struct WitnessCut {
 
 /// Cuts `part` through `witness` (a point on or near it). `first`/`second` are the strip's
 /// boundary vertices (f = 0 and 1). Tries, in order: f through the witness (if it is inside
-/// the margins), the farthest-vertex field through the witness, f at 0.5, that field at 0.5.
+/// the margins), the farthest-vertex field through the witness, f at 0.5, that field at 0.5;
+/// with limits, each followed by the nearest iso-values of its field that meet them.
 /// \pre part is connected; first and second are non-empty and disjoint.
 WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
                                const std::vector<int>& second, const Vec3& witness,

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/bvh.h"
+#include "core/seams.h"
 
 namespace papercraft {
 
@@ -77,11 +78,23 @@ std::string strips_json(const std::vector<FlatStrip>& strips) {
       nlohmann::json edge = {{"v0", e.v0}, {"v1", e.v1}, {"kind", kind_name(e.kind)}};
       if (e.kind == EdgeKind::Seam) {
         edge["neighbour"] = e.neighbour_strip;
+        edge["partner_edge"] = e.partner_edge;
         edge["label"] = e.label;
       }
       s["boundary"].push_back(std::move(edge));
     }
     root["strips"].push_back(std::move(s));
+  }
+  // Each seam once, with its chain of boundary edges on both sides (the same strip twice for
+  // the ruling a closed strip was opened along), so other tools can check that they meet.
+  root["seams"] = nlohmann::json::array();
+  for (const SeamChain& chain : labelled_chains(strips)) {
+    nlohmann::json sides = nlohmann::json::array();
+    for (const SeamSide& side : chain.sides)
+      sides.push_back({{"strip", side.strip}, {"edges", side.edges}});
+    root["seams"].push_back({{"label", chain.label},
+                             {"self", chain.sides[0].strip == chain.sides[1].strip},
+                             {"sides", std::move(sides)}});
   }
   return root.dump(1) + "\n";
 }

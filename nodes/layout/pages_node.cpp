@@ -28,54 +28,55 @@ void register_layout_pages(Registry& registry) {
   using O = LayoutOptions;
   static const auto table =
       ParamTable<O>()
-          .convert("page", ParamType::String, [](O& o) -> auto& { return o.page; },
-                   page_size_name, page_of,
-                   "A3, A4, A5, Letter, Legal, Tabloid or WIDTHxHEIGHT in mm (e.g. 300x450)")
-          .add("margin_mm", [](O& o) -> auto& { return o.margin_mm; },
-               "blank border on every side of a page", at_least(0))
-          .add("height_mm", [](O& o) -> auto& { return o.height_mm; },
-               "size of the model's largest bounding-box side on paper (--height overrides)",
-               greater_than(0))
-          .add("tab_width_mm", [](O& o) -> auto& { return o.tab_width_mm; },
-               "glue tab width (0: no tabs)", at_least(0))
-          .add("fold_angle_degrees", [](O& o) -> auto& { return o.fold_angle_degrees; },
-               "inner edges bent more than this get a fold line", between(0, 180))
-          .add("strong_fold_angle_degrees",
-               [](O& o) -> auto& { return o.strong_fold_angle_degrees; },
-               "folds bent less than this are drawn as faint gentle-bend marks", between(0, 180))
-          .add("spacing_mm", [](O& o) -> auto& { return o.spacing_mm; }, "gap between pieces",
-               at_least(0))
-          .choice("packing", [](O& o) -> auto& { return o.packing; },
-                  std::vector<std::pair<std::string, PackingMethod>>{
-                      {"maxrects", PackingMethod::MaxRects}, {"shelf", PackingMethod::Shelf}},
-                  "maxrects or shelf");
-  registry.add(
-      {.name = "layout.pages",
-       .summary = "real-world scale, tightest rotation, MaxRects packing onto pages",
-       .input = MessageType::of<ModelStrips>(),
-       .outputs = {{"out", MessageType::of<Pattern>()}},
-       .params = table.specs(),
-       .create = [](const Params& params, const NodeContext&) {
-         const LayoutOptions options = table.read(params);
-         return make_body([options](const Envelope& in, Emitter& out) {
-           auto strips = in.get_shared<ModelStrips>();
-           LayoutOptions run_options = options;
-           const RunSettings& settings = *in.model->settings;
-           if (settings.height_mm > 0) run_options.height_mm = settings.height_mm;
-           if (settings.scale > 0) run_options.scale = settings.scale;
-           auto layout = std::make_shared<PatternLayout>(layout_pages(strips->flat, run_options));
-           for (const auto& warning : layout->warnings) in.model->note(warning);
-           in.model->update([&](ModelRecord& record) {
-             record.pages = static_cast<int>(layout->pages.size());
-             record.shelf_pages = layout->shelf_page_count;
-             record.mm_per_unit = layout->mm_per_unit;
-           });
-           Pattern pattern;
-           pattern.strips = strips;
-           pattern.layout = layout;
-           out.emit("out", std::move(pattern));
-         });
-       }});
+          .convert(
+              "page", ParamType::String, [](O & o) -> auto& { return o.page; }, page_size_name,
+              page_of, "A3, A4, A5, Letter, Legal, Tabloid or WIDTHxHEIGHT in mm (e.g. 300x450)")
+          .add(
+              "margin_mm", [](O & o) -> auto& { return o.margin_mm; },
+              "blank border on every side of a page", at_least(0))
+          .add(
+              "tab_width_mm", [](O & o) -> auto& { return o.tab_width_mm; },
+              "glue tab width (0: no tabs)", at_least(0))
+          .add(
+              "fold_angle_degrees", [](O & o) -> auto& { return o.fold_angle_degrees; },
+              "inner edges bent more than this get a fold line", between(0, 180))
+          .add(
+              "strong_fold_angle_degrees",
+              [](O & o) -> auto& { return o.strong_fold_angle_degrees; },
+              "folds bent less than this are drawn as faint gentle-bend marks", between(0, 180))
+          .add(
+              "spacing_mm", [](O & o) -> auto& { return o.spacing_mm; }, "gap between pieces",
+              at_least(0))
+          .choice(
+              "packing", [](O & o) -> auto& { return o.packing; },
+              std::vector<std::pair<std::string, PackingMethod>>{
+                  {"maxrects", PackingMethod::MaxRects}, {"shelf", PackingMethod::Shelf}},
+              "maxrects or shelf");
+  registry.add({.name = "layout.pages",
+                .summary = "real-world scale, tightest rotation, MaxRects packing onto pages",
+                .input = MessageType::of<ModelStrips>(),
+                .outputs = {{"out", MessageType::of<Pattern>()}},
+                .params = table.specs(),
+                .create = [](const Params& params, const NodeContext&) {
+                  const LayoutOptions options = table.read(params);
+                  return make_body([options](const Envelope& in, Emitter& out) {
+                    auto strips = in.get_shared<ModelStrips>();
+                    // The print scale is the run's, fixed when the model was loaded.
+                    LayoutOptions run_options = options;
+                    run_options.scale = in.model->mm_per_unit();
+                    auto layout =
+                        std::make_shared<PatternLayout>(layout_pages(strips->flat, run_options));
+                    for (const auto& warning : layout->warnings) in.model->note(warning);
+                    in.model->update([&](ModelRecord& record) {
+                      record.pages = static_cast<int>(layout->pages.size());
+                      record.shelf_pages = layout->shelf_page_count;
+                    });
+                    Pattern pattern;
+                    pattern.strips = strips;
+                    pattern.layout = layout;
+                    out.emit("out", std::move(pattern));
+                  });
+                }});
 }
 
 }  // namespace papercraft

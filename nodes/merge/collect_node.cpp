@@ -1,8 +1,11 @@
 // Adapter support shared by merge.congruent and merge.none (see collect_node.h).
 
+#include "nodes/merge/collect_node.h"
+
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
 
-#include "nodes/merge/collect_node.h"
 #include "core/seams.h"
 
 namespace papercraft {
@@ -31,6 +34,9 @@ ModelStrips collect_model_strips(std::vector<std::shared_ptr<const UnfoldedStrip
   ModelStrips strips;
   for (const auto& u : unfolded) {
     const int source = static_cast<int>(strips.strips3d.size());
+    spdlog::debug("strip {}: part {} ({} faces, area {:.4g}), {} flat", source,
+                  u->strip->candidate->part.path, u->strip->candidate->part.mesh->n_faces(),
+                  surface_area(*u->strip->candidate->part.mesh), u->flat.size());
     strips.strips3d.push_back(u->strip);
     if (!strips.model) strips.model = u->strip->candidate->part.model;
     for (FlatStrip flat : u->flat) {
@@ -40,6 +46,7 @@ ModelStrips collect_model_strips(std::vector<std::shared_ptr<const UnfoldedStrip
     }
   }
   strips.flat_before_merge = strips.flat.size();
+  split_t_junctions(strips.flat);
   label_seams(strips.flat);
   return strips;
 }

@@ -273,7 +273,8 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
     // Welding must keep the strip a consistently oriented manifold: a directed edge used by
     // two triangles means the chains were glued the wrong way round somewhere; and welding
     // snaps y's seam vertices onto x's, so a thin triangle next to the seam must not flip.
-    if (!consistently_oriented(merged.triangles) || first_clockwise_triangle(merged.vertices2d, merged.triangles, 1e-10) >= 0)
+    if (!consistently_oriented(merged.triangles) ||
+        first_clockwise_triangle(merged.vertices2d, merged.triangles, 1e-10) >= 0)
       continue;
     merged.boundary = flat_boundary(merged.triangles);
     return true;
@@ -311,6 +312,74 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips, const Merg
       break;
     }
   }
+  label_seams(strips);
+  return strips;
+}
+
+namespace {
+
+double flat_area(const FlatStrip& strip) {
+  double area = 0.0;
+  for (const Triangle& t : strip.triangles) {
+    const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
+    const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
+    area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+  }
+  return area;
+}
+
+}  // namespace
+
+std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
+                                         const MergeOptions& options, std::vector<int>* left) {
+  validate(strips, options);
+  if (left) left->clear();
+  if (!(min_area > 0.0)) return strips;
+  for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
+  std::set<int> given_up;  // ids of small strips no neighbour takes
+  while (true) {
+    // The smallest strip still to place.
+    int small = -1;
+    double smallest = min_area;
+    for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+      const double area = flat_area(strips[s]);
+      if (area < smallest && !given_up.count(strips[s].id)) small = s, smallest = area;
+    }
+    if (small < 0) break;
+    // Its shared boundaries, as single edges, the longest first: the hinge it folds over.
+    struct Hinge {
+      int pair;
+      Chain edge;
+    };
+    std::vector<PairCandidate> pairs = shared_boundaries(strips);
+    std::vector<Hinge> hinges;
+    for (int p = 0; p < static_cast<int>(pairs.size()); ++p) {
+      if (pairs[p].x != small && pairs[p].y != small) continue;
+      const FlatStrip& x = strips[pairs[p].x];
+      for (const Chain& chain : pairs[p].chains)
+        for (std::size_t i = 0; i + 1 < chain.x.size(); ++i) {
+          Chain edge;
+          edge.x = {chain.x[i], chain.x[i + 1]};
+          edge.y = {chain.y[i], chain.y[i + 1]};
+          edge.length = (x.vertices3d[chain.x[i + 1]] - x.vertices3d[chain.x[i]]).norm();
+          hinges.push_back({p, std::move(edge)});
+        }
+    }
+    std::stable_sort(hinges.begin(), hinges.end(),
+                     [](const Hinge& a, const Hinge& b) { return a.edge.length > b.edge.length; });
+    bool joined = false;
+    for (const Hinge& hinge : hinges) {
+      const PairCandidate& pair = pairs[hinge.pair];
+      FlatStrip merged;
+      if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
+      strips[pair.x] = std::move(merged);
+      strips.erase(strips.begin() + pair.y);
+      joined = true;
+      break;
+    }
+    if (!joined) given_up.insert(strips[small].id);
+  }
+  if (left) left->assign(given_up.begin(), given_up.end());
   label_seams(strips);
   return strips;
 }

@@ -13,8 +13,10 @@ namespace papercraft {
 struct MergeOptions {
   /// The two flat images of a shared boundary are congruent when, after the best rigid
   /// motion (a rotation and a translation, never a reflection), no point is farther from
-  /// its partner than this times the boundary's length.
-  double congruence_tolerance = 1e-6;
+  /// its partner than this times the boundary's length. Welding moves the joined strip's
+  /// boundary points by up to that much, so it bounds how far a seam's two sides may differ
+  /// in length.
+  double congruence_tolerance = 1e-9;
   /// The union must not overlap itself: two triangles may penetrate by at most this
   /// times the mean edge length (plus the rigid fit's residual).
   double overlap_tolerance = 1e-9;
@@ -43,5 +45,17 @@ struct MergeOptions {
 /// would have allowed; chains must share vertices exactly (no collinear sub-segments).
 std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
                                        const MergeOptions& options = {});
+
+/// Joins each flat strip of less than `min_area` (model units squared) to a neighbour, the
+/// smallest first: Y moved rigidly so that one edge it shares with X lies on X's image of it
+/// (the longest shared edge first; lengths agree, the strips being isometric), kept where the
+/// union overlaps nowhere. The joined piece folds over that edge (a hinge); its other shared
+/// edges become seams of the union with itself, glued as any seam. Merged strips keep the
+/// lower index's id and frame, as in merge_congruent. The ids of small strips no neighbour
+/// takes go to `left` (when given); then label_seams runs on the result.
+/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
+                                         const MergeOptions& options = {},
+                                         std::vector<int>* left = nullptr);
 
 }  // namespace papercraft

@@ -4,7 +4,11 @@
 //
 //   merge: {impl: merge.congruent, to: [layout]}
 
+#include <spdlog/spdlog.h>
+
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 #include "graph/messages.h"
 #include "graph/model_run.h"
@@ -33,12 +37,34 @@ void record(ModelRun& model, const ModelStrips& strips) {
   });
 }
 
+// The pieces a person cannot handle, named in report.json and on stderr.
+void note_small_pieces(ModelRun& model, const std::vector<FlatStrip>& strips,
+                       const std::vector<int>& small) {
+  const double scale = model.mm_per_unit();
+  for (int id : small) {
+    for (const FlatStrip& strip : strips) {
+      if (strip.id != id) continue;
+      double area = 0.0;
+      for (const Triangle& t : strip.triangles) {
+        const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
+        const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
+        area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+      }
+      const std::string text = "flat strip " + std::to_string(id) + " is " +
+                               std::to_string(static_cast<int>(std::lround(area * scale * scale))) +
+                               " mm^2, below min_area_mm2, and no neighbour takes it";
+      model.note(text);
+      spdlog::warn("{}: {}", model.name, text);
+    }
+  }
+}
+
 }  // namespace
 
 void register_merge_congruent(Registry& registry) {
   using O = MergeOptions;
   static const auto table = ParamTable<O>().add(
-      "congruence_tolerance", [](O& o) -> auto& { return o.congruence_tolerance; },
+      "congruence_tolerance", [](O & o) -> auto& { return o.congruence_tolerance; },
       "rigid-fit residual (relative to the strip size) below which two images of a boundary "
       "are congruent",
       at_least(0));
@@ -54,6 +80,10 @@ void register_merge_congruent(Registry& registry) {
                     ModelStrips strips =
                         collect_model_strips(in.get<Gathered>().as<UnfoldedStrip>());
                     strips.flat = merge_congruent(std::move(strips.flat), options);
+                    std::vector<int> small;
+                    strips.flat = join_small_strips(
+                        std::move(strips.flat), in.model->piece_limits().min_area, options, &small);
+                    note_small_pieces(*in.model, strips.flat, small);
                     record(*in.model, strips);
                     out.emit("out", std::move(strips));
                   });

@@ -11,7 +11,7 @@ HausdorffResult decide_within(const TriangleMesh& part, const TriangleMesh& stri
 }
 
 StripVerdict judge_strip(const Mesh& part, const RuledStrip& strip, int hole_count,
-                          double tolerance, const DecideOptions& options) {
+                         double tolerance, const DecideOptions& options) {
   StripVerdict verdict;
   if (hole_count > 0) {
     // Holes are split off regardless of the error (paper 3.2.2): a strip between two

@@ -39,6 +39,6 @@ inline constexpr double kDegenerateStripArea = 1e-9;
 
 /// Decides one strip of a part with `hole_count` unused boundary loops.
 StripVerdict judge_strip(const Mesh& part, const RuledStrip& strip, int hole_count,
-                          double tolerance, const DecideOptions& options);
+                         double tolerance, const DecideOptions& options);
 
 }  // namespace papercraft

@@ -43,8 +43,8 @@ std::vector<ScoredSelection> score(const Mesh& part, std::vector<BoundarySelecti
       result = sampled_hausdorff_distance(part_tree.mesh(), strip.mesh, options.decide.sampling);
     } else {
       const TriangleBvh strip_tree(std::move(strip.mesh));
-      result = certified_hausdorff_distance(part_tree, strip_tree, error_bound,
-                                            options.decide.bounded);
+      result =
+          certified_hausdorff_distance(part_tree, strip_tree, error_bound, options.decide.bounded);
     }
     scores[k] = {std::move(selection), result.lower, result.upper, result.certified};
   });

@@ -1,8 +1,9 @@
 #pragma once
 // The exhaustive boundary selection of the paper (section 3.2.1): build the strip for every
 // candidate pair (geodesic.h, candidate_selections) and keep the pair with the lowest
-// Hausdorff error (certified, or sampled when the refinement decides by sampling). Locally optimal and slower than select_geodesic: one strip and
-// one Hausdorff distance per pair, evaluated in parallel.
+// Hausdorff error (certified, or sampled when the refinement decides by sampling). Locally optimal
+// and slower than select_geodesic: one strip and one Hausdorff distance per pair, evaluated in
+// parallel.
 
 #include <vector>
 

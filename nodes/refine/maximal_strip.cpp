@@ -15,6 +15,7 @@ namespace {
 struct Probe {
   bool ok = false;
   double area = 0.0;
+  const Mesh* piece = nullptr;  // the strip's piece
 };
 
 int vertex_at(const Mesh& mesh, const OpenMesh::Vec3d& point) {
@@ -66,7 +67,7 @@ Probe probe(const Mesh& part, const std::vector<Mesh>& pieces, const std::vector
   if (strip.mesh.empty()) return {};
   const HausdorffResult result =
       decide_within(to_triangle_mesh(*piece), strip.mesh, tolerance, options.decide);
-  return {result.within, surface_area(*piece)};
+  return {result.within, surface_area(*piece), piece};
 }
 
 }  // namespace
@@ -102,11 +103,21 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut.cut);
       const Probe result =
           pieces.size() < 2 ? Probe{} : probe(part, pieces, side, closed, tolerance, probe_options);
-      const bool big_enough = result.ok && result.area >= least * area &&
-                              area - result.area >= options.cut.min_piece_fraction * area;
+      bool big_enough = result.ok && result.area >= least * area &&
+                        area - result.area >= options.cut.min_piece_fraction * area;
+      // Limits: a strip too narrow or small is no answer, but a larger one may be; a rest too
+      // narrow or small asks for a smaller strip.
+      bool record = big_enough;
+      if (big_enough && options.cut.limits.active()) {
+        for (const Mesh& piece : pieces) {
+          if (piece_fits(piece, options.cut.limits)) continue;
+          record = false;
+          if (&piece != result.piece) big_enough = false;
+        }
+      }
       if (big_enough) {
         good = d;
-        found = {{std::move(pieces), value, false}, result.area};
+        if (record) found = {{std::move(pieces), value, false}, result.area};
       } else {
         bad = d;
       }

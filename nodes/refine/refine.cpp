@@ -56,8 +56,8 @@ StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
 
 std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,
                                      const StripVerdict& verdict, int depth, double tolerance,
-                                     const RefineOptions& options,
-                                     const std::string& part_name) {
+                                     const RefineOptions& options, const std::string& part_name,
+                                     const PieceLimits& limits) {
   auto fail = [&](const std::string& why) {
     std::ostringstream message;
     message << "part " << part_name << " (" << part.n_faces()
@@ -71,13 +71,19 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
     fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
   }
   const std::vector<int>* hole = verdict.hole >= 0 ? &boundaries.holes[verdict.hole] : nullptr;
-  WitnessCut cut = cut_rejected_part(part, boundaries.first, boundaries.first_closed,
-                                     boundaries.second, boundaries.second_closed, hole,
-                                     verdict.witness, tolerance, options.cut, options.twist,
-                                     options.decide);
-  spdlog::debug("cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {}",
-                part_name, part.n_faces(), boundaries.holes.size(), verdict.hole,
-                verdict.witness_error, cut.across ? "g" : "f", cut.value, cut.pieces.size());
+  WitnessCut cut = cut_rejected_part(
+      part, boundaries.first, boundaries.first_closed, boundaries.second, boundaries.second_closed,
+      hole, verdict.witness, tolerance, options.cut, options.twist, options.decide, limits);
+  if (spdlog::should_log(spdlog::level::debug)) {
+    std::string shortfalls;
+    for (const Mesh& piece : cut.pieces)
+      shortfalls += " " + std::to_string(piece_shortfall(piece, limits));
+    spdlog::debug(
+        "cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {} (limit "
+        "shortfalls{})",
+        part_name, part.n_faces(), boundaries.holes.size(), verdict.hole, verdict.witness_error,
+        cut.across ? "g" : "f", cut.value, cut.pieces.size(), shortfalls);
+  }
   if (cut.pieces.empty()) fail("no iso-line through the worst point splits it");
   return std::move(cut.pieces);
 }
@@ -95,7 +101,7 @@ struct Pending {
 // each cut and returns false to stop. Returns false when stopped.
 template <class Accept, class Room>
 bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions& options,
-                        Accept accept, Room room) {
+                        const PieceLimits& limits, Accept accept, Room room) {
   std::vector<Pending> stack;
   stack.push_back({root, "", 0});
   while (!stack.empty()) {
@@ -110,7 +116,7 @@ bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions&
     }
     std::vector<Mesh> pieces =
         cut_rejected_piece(item.piece, boundaries, verdict, item.depth, tolerance, options,
-                           item.path.empty() ? "(whole)" : item.path);
+                           item.path.empty() ? "(whole)" : item.path, limits);
     if (!room(stack.size() + pieces.size())) return false;
     // Pushed last first, so the pieces are refined in cut order.
     for (std::size_t i = pieces.size(); i-- > 0;) {
@@ -123,10 +129,10 @@ bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions&
 }  // namespace
 
 std::vector<RefinedStrip> refine_part(const Mesh& part, double tolerance,
-                                      const RefineOptions& options) {
+                                      const RefineOptions& options, const PieceLimits& limits) {
   std::vector<RefinedStrip> strips;
   refine_depth_first(
-      part, tolerance, options,
+      part, tolerance, options, limits,
       [&](Pending&& item, StripBoundaries&& boundaries, RuledStrip&& strip,
           const StripVerdict& verdict) {
         strips.push_back({std::move(item.piece), std::move(item.path), item.depth,
@@ -137,11 +143,12 @@ std::vector<RefinedStrip> refine_part(const Mesh& part, double tolerance,
   return strips;
 }
 
-int count_strips(const Mesh& part, double tolerance, const RefineOptions& options, int cap) {
+int count_strips(const Mesh& part, double tolerance, const RefineOptions& options, int cap,
+                 const PieceLimits& limits) {
   int strips = 0;
   try {
     const bool finished = refine_depth_first(
-        part, tolerance, options,
+        part, tolerance, options, limits,
         [&](Pending&&, StripBoundaries&&, RuledStrip&&, const StripVerdict&) {
           return ++strips <= cap;
         },

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "core/piece_limits.h"
 #include "core/strip.h"
 #include "nodes/refine/decide.h"
 #include "nodes/refine/rejected_cut.h"
@@ -73,13 +74,14 @@ RuledStrip build_strip(const StripBoundaries& boundaries, const RefineOptions& o
 StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
                           const RuledStrip& strip, double tolerance, const RefineOptions& options);
 
-/// Step 4: the pieces of a part `depth` cuts below its segment whose strip was rejected.
+/// Step 4: the pieces of a part `depth` cuts below its segment whose strip was rejected,
+/// each meeting `limits` where some cut allows it (rejected_cut.h).
 /// \throws ApproximationException, naming `part_name`, the tolerance and the worst point, when
 /// depth >= max_depth or no cut makes progress.
 std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,
                                      const StripVerdict& verdict, int depth, double tolerance,
-                                     const RefineOptions& options,
-                                     const std::string& part_name);
+                                     const RefineOptions& options, const std::string& part_name,
+                                     const PieceLimits& limits = {});
 
 /// One accepted strip of refine_part: the piece it covers and how it was made.
 struct RefinedStrip {
@@ -95,12 +97,13 @@ struct RefinedStrip {
 /// order of their paths (depth first, pieces in cut order), as the graph would make them.
 /// \throws ApproximationException as cut_rejected_piece, InvalidInputException as the steps.
 std::vector<RefinedStrip> refine_part(const Mesh& part, double tolerance,
-                                      const RefineOptions& options = {});
+                                      const RefineOptions& options = {},
+                                      const PieceLimits& limits = {});
 
 /// How many strips refine_part would make of `part`, counting no further than `cap`: returns
 /// cap + 1 once more would be needed, and also when the refinement fails (a part that cannot
 /// be approximated is no better choice than any other). Deterministic.
 int count_strips(const Mesh& part, double tolerance, const RefineOptions& options = {},
-                 int cap = INT_MAX - 1);
+                 int cap = INT_MAX - 1, const PieceLimits& limits = {});
 
 }  // namespace papercraft

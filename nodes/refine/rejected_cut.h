@@ -5,6 +5,7 @@
 //      `search_min_fraction` of the part);
 //   2. else through the hole the decision named, or through the worst point (paper 3.2.2);
 //   3. if nothing splits the part, any certified strip next to a boundary, however thin.
+// With piece limits, every one of these keeps the pieces a person can cut and glue where it can.
 // Crossings within `snap_tolerance`·tolerance of a vertex snap to it.
 
 #include <vector>
@@ -29,11 +30,13 @@ struct RejectedCutOptions {
 /// harmonic_field) was rejected at `tolerance`, with its worst point at `witness`, or, when
 /// `hole` is non-null, because of that unused boundary loop. Returns no pieces when no cut
 /// makes progress. The maximal-strip search builds and decides its probes with `twist` and
-/// `decide`, as the refinement does.
+/// `decide`, as the refinement does. With `limits`, no cut leaves a piece narrower or smaller
+/// than they allow where another iso-value would not (through_witness.h); the search keeps
+/// only strips whose pieces meet them.
 WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
                              const RejectedCutOptions& options, const TwistOptions& twist,
-                             const DecideOptions& decide);
+                             const DecideOptions& decide, const PieceLimits& limits = {});
 
 }  // namespace papercraft

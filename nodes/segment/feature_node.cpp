@@ -12,9 +12,9 @@
 #include "graph/param_table.h"
 #include "graph/registry.h"
 #include "nodes/refine/refine.h"
-#include "nodes/segment/parts_node.h"
 #include "nodes/segment/feature.h"
 #include "nodes/segment/none.h"
+#include "nodes/segment/parts_node.h"
 
 namespace papercraft {
 
@@ -32,57 +32,64 @@ void register_segment_feature(Registry& registry) {
   using O = FeatureNodeOptions;
   static const auto table =
       ParamTable<O>()
-          .add("angle_degrees", [](O& o) -> auto& { return o.segment.angle_degrees; },
-               "edges bent more than this separate parts", ParamRange{0.0, 180.0, true, true})
-          .add("min_area_fraction", [](O& o) -> auto& { return o.segment.min_area_fraction; },
-               "regions smaller than this fraction of the area join a neighbour",
-               ParamRange{0.0, 1.0, false, true})
-          .add("close_gap_fraction", [](O& o) -> auto& { return o.segment.close_gap_fraction; },
-               "feature chains whose ends are this close (of the bounding-box diagonal) are "
-               "closed",
-               at_least(0))
-          .add("strip_estimate", [](O& o) -> auto& { return o.strip_estimate; },
-               "emit the model whole unless the refinement makes fewer strips of the parts "
-               "(estimated at the model's tolerance)")
-          .add("parts_ply", [](O& o) -> auto& { return o.parts_ply; },
-               "write the parts, faces coloured by part, to <output>/parts.ply");
-  registry.add(
-      {.name = "segment.feature",
-       .summary = "parts separated by sharp edges (dihedral angle above a threshold)",
-       .input = MessageType::of<Model>(),
-       .outputs = {{"out", MessageType::of<Part>()}},
-       .params = table.specs(),
-       .create = [](const Params& params, const NodeContext& context) {
-         const FeatureNodeOptions options = table.read(params);
-         const RefineOptions refine = context.refine;
-         return make_body([options, refine](const Envelope& in, Emitter& out) {
-           Mesh mesh = *in.get<Model>().mesh;
-           tag_input_vertices(mesh);
-           std::vector<Mesh> parts = segment_feature(mesh, options.segment);
-           std::vector<Mesh> whole = segment_none(mesh);
-           if (options.strip_estimate && parts.size() > whole.size()) {
-             // Paper folds along a crease inside a strip as well: a crease is only worth a
-             // boundary if the parts cost fewer strips than the model whole. The parts are
-             // counted first, side by side; the model whole only up to their total (so the
-             // usual loser on creased models stops early).
-             const double tolerance = in.model->tolerance();
-             std::vector<int> counts(parts.size());
-             tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t i) {
-               counts[i] = count_strips(parts[i], tolerance, refine, 1 << 20);
-             });
-             long part_strips = 0;
-             for (int count : counts) part_strips += count;
-             long whole_strips = 0;
-             for (const Mesh& part : whole) {
-               const long cap = std::min(part_strips - whole_strips, long{1} << 20);  // >= 0
-               whole_strips += count_strips(part, tolerance, refine, static_cast<int>(cap));
-               if (whole_strips > part_strips) break;
-             }
-             if (part_strips >= whole_strips) parts = std::move(whole);
-           }
-           emit_parts(in, out, std::move(parts), options.parts_ply);
-         });
-       }});
+          .add(
+              "angle_degrees", [](O & o) -> auto& { return o.segment.angle_degrees; },
+              "edges bent more than this separate parts", ParamRange{0.0, 180.0, true, true})
+          .add(
+              "min_area_fraction", [](O & o) -> auto& { return o.segment.min_area_fraction; },
+              "regions smaller than this fraction of the area join a neighbour",
+              ParamRange{0.0, 1.0, false, true})
+          .add(
+              "close_gap_fraction", [](O & o) -> auto& { return o.segment.close_gap_fraction; },
+              "feature chains whose ends are this close (of the bounding-box diagonal) are "
+              "closed",
+              at_least(0))
+          .add(
+              "strip_estimate", [](O & o) -> auto& { return o.strip_estimate; },
+              "emit the model whole unless the refinement makes fewer strips of the parts "
+              "(estimated at the model's tolerance)")
+          .add(
+              "parts_ply", [](O & o) -> auto& { return o.parts_ply; },
+              "write the parts, faces coloured by part, to <output>/parts.ply");
+  registry.add({.name = "segment.feature",
+                .summary = "parts separated by sharp edges (dihedral angle above a threshold)",
+                .input = MessageType::of<Model>(),
+                .outputs = {{"out", MessageType::of<Part>()}},
+                .params = table.specs(),
+                .create = [](const Params& params, const NodeContext& context) {
+                  const FeatureNodeOptions options = table.read(params);
+                  const RefineOptions refine = context.refine;
+                  return make_body([options, refine](const Envelope& in, Emitter& out) {
+                    Mesh mesh = *in.get<Model>().mesh;
+                    tag_input_vertices(mesh);
+                    std::vector<Mesh> parts = segment_feature(mesh, options.segment);
+                    std::vector<Mesh> whole = segment_none(mesh);
+                    if (options.strip_estimate && parts.size() > whole.size()) {
+                      // Paper folds along a crease inside a strip as well: a crease is only worth a
+                      // boundary if the parts cost fewer strips than the model whole. The parts are
+                      // counted first, side by side; the model whole only up to their total (so the
+                      // usual loser on creased models stops early).
+                      const double tolerance = in.model->tolerance();
+                      const PieceLimits limits = in.model->piece_limits();
+                      std::vector<int> counts(parts.size());
+                      tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t i) {
+                        counts[i] = count_strips(parts[i], tolerance, refine, 1 << 20, limits);
+                      });
+                      long part_strips = 0;
+                      for (int count : counts) part_strips += count;
+                      long whole_strips = 0;
+                      for (const Mesh& part : whole) {
+                        const long cap =
+                            std::min(part_strips - whole_strips, long{1} << 20);  // >= 0
+                        whole_strips +=
+                            count_strips(part, tolerance, refine, static_cast<int>(cap), limits);
+                        if (whole_strips > part_strips) break;
+                      }
+                      if (part_strips >= whole_strips) parts = std::move(whole);
+                    }
+                    emit_parts(in, out, std::move(parts), options.parts_ply);
+                  });
+                }});
 }
 
 }  // namespace papercraft

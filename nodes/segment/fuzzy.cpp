@@ -399,8 +399,8 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
 // certified: every strip is still decided against its own part.
 class EstimateCache {
  public:
-  EstimateCache(double tolerance, const RefineOptions& refine)
-      : tolerance_(tolerance), refine_(refine) {}
+  EstimateCache(double tolerance, const RefineOptions& refine, const PieceLimits& limits)
+      : tolerance_(tolerance), refine_(refine), limits_(limits) {}
 
   int estimate(const Mesh& part, int cap) {
     const std::uint64_t key = geometry_hash(part);
@@ -413,7 +413,7 @@ class EstimateCache {
         if (cap <= computed_cap) return cap + 1;
       }
     }
-    const int count = count_strips(part, tolerance_, refine_, cap);
+    const int count = count_strips(part, tolerance_, refine_, cap, limits_);
     std::lock_guard lock(mutex_);
     const auto [it, inserted] = entries_.try_emplace(key, count, cap);
     if (!inserted) {
@@ -450,6 +450,7 @@ class EstimateCache {
 
   const double tolerance_;
   const RefineOptions& refine_;
+  const PieceLimits limits_;
   std::mutex mutex_;
   std::unordered_map<std::uint64_t, std::pair<int, int>> entries_;  // count, cap
 };
@@ -871,7 +872,7 @@ std::vector<Mesh> segment_fuzzy(const Mesh& mesh, const FuzzySegmentOptions& opt
     if (component[f] >= static_cast<int>(components.size())) components.resize(component[f] + 1);
     components[component[f]].push_back(static_cast<int>(f));
   }
-  EstimateCache estimates(options.strip_tolerance, options.refine);
+  EstimateCache estimates(options.strip_tolerance, options.refine, options.strip_limits);
   // One hierarchy's regions as face labels, and whether it split anything. On a connected
   // model, judged by strips, a decomposition costing more than `cap` is not looked for (the
   // hierarchy's branches are cut off as soon as they cost more).

@@ -78,6 +78,8 @@ struct FuzzySegmentOptions {
   /// The refinement that judges the levels: the pipeline's own (the segment.fuzzy node passes
   /// the options of the configured select, ruled, hausdorff and cut nodes).
   RefineOptions refine;
+  /// The pieces the refinement keeps a person able to cut and glue (the model's limits).
+  PieceLimits strip_limits;
   /// With strip_tolerance > 0, also judge the two-way split between each region's farthest
   /// faces (Katz & Tal's two-part decomposition) at every level.
   bool two_way_candidate = true;

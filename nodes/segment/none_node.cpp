@@ -3,8 +3,8 @@
 //   segment: {impl: segment.none, to: [select]}
 
 #include "graph/registry.h"
-#include "nodes/segment/parts_node.h"
 #include "nodes/segment/none.h"
+#include "nodes/segment/parts_node.h"
 
 namespace papercraft {
 

@@ -1,6 +1,7 @@
 #include "nodes/unfold/sequential.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -64,6 +65,127 @@ Vec2 place_third(const Vec3& a3, const Vec3& b3, const Vec3& c3, const Vec2& a2,
   Vec2 e = edge / length2;
   Vec2 n(-e.y(), e.x());
   return a2 + along * e + height * n;
+}
+
+// Places the triangles of `run` (each sharing an edge with the one before it) into `builder`,
+// the first with its longest edge along +x; returns how many were placed before one would
+// overlap the others (run.size() when none does).
+std::size_t place_run(const RuledStrip& strip, const std::vector<std::array<int, 3>>& neighbour,
+                      const std::vector<int>& run, FlatBuilder& builder, double tolerance) {
+  const auto& vertices = strip.mesh.vertices;
+  const auto& triangles = strip.mesh.triangles;
+  auto add_vertex = [&](int source, const Vec2& position) {
+    builder.flat.vertices3d.push_back(vertices[source]);
+    builder.flat.vertices2d.push_back(position);
+    if (!strip.uvs.empty()) builder.flat.uvs.push_back(strip.uvs[source]);
+    return static_cast<int>(builder.flat.vertices2d.size()) - 1;
+  };
+  std::array<int, 3> previous_corners{};
+  for (std::size_t k = 0; k < run.size(); ++k) {
+    const int t = run[k];
+    const Triangle& tri = triangles[t];
+    std::array<int, 3> corners;
+    Triangle2 image;
+    if (k == 0) {
+      int r = 0;
+      double longest = -1.0;
+      for (int i = 0; i < 3; ++i) {
+        const double length = (vertices[tri[(i + 1) % 3]] - vertices[tri[i]]).norm();
+        if (length > longest) longest = length, r = i;
+      }
+      const int a = tri[r], b = tri[(r + 1) % 3], c = tri[(r + 2) % 3];
+      const Vec2 a2(0.0, 0.0), b2(longest, 0.0);
+      const Vec2 c2 = place_third(vertices[a], vertices[b], vertices[c], a2, b2, Vec2(0.0, 1.0));
+      image[r] = a2, image[(r + 1) % 3] = b2, image[(r + 2) % 3] = c2;
+      corners[r] = add_vertex(a, a2);
+      corners[(r + 1) % 3] = add_vertex(b, b2);
+      corners[(r + 2) % 3] = add_vertex(c, c2);
+    } else {
+      const int parent = run[k - 1];
+      int j = 0;
+      while (j < 3 && neighbour[parent][j] != t) ++j;
+      int i = 0;
+      while (i < 3 && (neighbour[t][i] != parent || tri[i] != triangles[parent][(j + 1) % 3])) ++i;
+      if (j == 3 || i == 3) return k;  // not adjacent: cannot happen on a path
+      const int a = tri[i], b = tri[(i + 1) % 3], c = tri[(i + 2) % 3];
+      const int fa = previous_corners[(j + 1) % 3], fb = previous_corners[j];
+      const Vec2 a2 = builder.flat.vertices2d[fa], b2 = builder.flat.vertices2d[fb];
+      const Vec2 p2 = builder.flat.vertices2d[previous_corners[(j + 2) % 3]];
+      const Vec2 c2 = place_third(vertices[a], vertices[b], vertices[c], a2, b2, a2 - p2);
+      image[i] = a2, image[(i + 1) % 3] = b2, image[(i + 2) % 3] = c2;
+      if (builder.grid.overlaps(image, tolerance)) return k;
+      corners[i] = fa;
+      corners[(i + 1) % 3] = fb;
+      corners[(i + 2) % 3] = add_vertex(c, c2);
+    }
+    builder.flat.triangles.push_back({corners[0], corners[1], corners[2]});
+    builder.grid.insert(image);
+    previous_corners = corners;
+  }
+  return run.size();
+}
+
+// For a strip whose triangles form one path (a ruled strip, a closed one opened along a
+// ruling), the fewest runs of consecutive triangles that each unfold without overlap, with
+// the cuts moved so that the runs have similar areas: cut k goes where the area before it is
+// nearest k/m of the total, within the range that leaves the rest coverable by the runs left
+// (overlap-freeness is inherited by sub-runs, so greedy runs from either end bound it).
+// Empty when the triangles are not one path.
+std::vector<std::vector<int>> balanced_runs(const RuledStrip& strip,
+                                            const std::vector<std::array<int, 3>>& neighbour,
+                                            const std::vector<int>& order,
+                                            const std::vector<bool>& usable, double cell_size,
+                                            double tolerance) {
+  const int n = static_cast<int>(order.size());
+  if (n < 2) return {};
+  if (static_cast<int>(std::count(usable.begin(), usable.end(), true)) != n) return {};
+  for (int k = 1; k < n; ++k) {
+    const auto& links = neighbour[order[k]];
+    if (std::find(links.begin(), links.end(), order[k - 1]) == links.end()) return {};
+  }
+  auto run_of = [&](int begin, int end, bool reverse) {
+    std::vector<int> run(order.begin() + begin, order.begin() + end);
+    if (reverse) std::reverse(run.begin(), run.end());
+    return run;
+  };
+  // How far an overlap-free run reaches from `begin` forwards (its end), or from `end`
+  // backwards (its begin).
+  auto forward = [&](int begin) {
+    FlatBuilder builder{FlatStrip{}, TriangleGrid2(cell_size)};
+    return begin + static_cast<int>(
+                       place_run(strip, neighbour, run_of(begin, n, false), builder, tolerance));
+  };
+  auto backward = [&](int end) {
+    FlatBuilder builder{FlatStrip{}, TriangleGrid2(cell_size)};
+    return end -
+           static_cast<int>(place_run(strip, neighbour, run_of(0, end, true), builder, tolerance));
+  };
+  int runs = 0;
+  for (int begin = 0; begin < n; begin = forward(begin)) ++runs;
+  if (runs < 2) return {};
+  // latest[r]: the earliest triangle from which r runs still reach the end.
+  std::vector<int> latest(runs, n);
+  for (int r = 1; r < runs; ++r) latest[r] = backward(latest[r - 1]);
+  std::vector<double> area(n + 1, 0.0);
+  for (int k = 0; k < n; ++k) {
+    const Triangle& t = strip.mesh.triangles[order[k]];
+    const auto& v = strip.mesh.vertices;
+    area[k + 1] = area[k] + 0.5 * (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).norm();
+  }
+  std::vector<std::vector<int>> result;
+  int begin = 0;
+  for (int left = runs; left > 1; --left) {
+    const int hi = forward(begin);
+    const int lo = std::max(begin + 1, latest[left - 1]);
+    const double target = area[begin] + (area[n] - area[begin]) / left;
+    int best = std::clamp(hi, lo, hi);
+    for (int end = lo; end <= hi; ++end)
+      if (std::abs(area[end] - target) < std::abs(area[best] - target)) best = end;
+    result.push_back(run_of(begin, best, false));
+    begin = best;
+  }
+  result.push_back(run_of(begin, n, false));
+  return result;
 }
 
 }  // namespace
@@ -159,6 +281,7 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
   }
 
   std::vector<bool> queued(triangle_count, false);
+  std::vector<int> visit_order;  // triangles in the order they were placed
   for (int root : roots) {
     if (queued[root]) continue;
     {
@@ -182,6 +305,7 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
       image[r] = a2, image[(r + 1) % 3] = b2, image[(r + 2) % 3] = c2;
       commit(f, root, corners, image);
     }
+    visit_order.push_back(root);
     queued[root] = true;
     std::deque<int> queue{root};
     while (!queue.empty()) {
@@ -217,6 +341,22 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
         }
         corners[(i + 2) % 3] = add_vertex(builders[f], c, c2);
         commit(f, t, corners, image);
+        visit_order.push_back(t);
+      }
+    }
+  }
+
+  // A strip that had to be split where it first overlapped itself: split it again into as
+  // many pieces, but of similar area, so that no piece is a sliver at the end.
+  if (builders.size() > 1) {
+    std::vector<std::vector<int>> runs =
+        balanced_runs(strip, neighbour, visit_order, usable, cell_size, tolerance);
+    if (!runs.empty()) {
+      builders.clear();
+      for (const std::vector<int>& run : runs) {
+        FlatBuilder builder{FlatStrip{}, TriangleGrid2(cell_size)};
+        place_run(strip, neighbour, run, builder, tolerance);
+        builders.push_back(std::move(builder));
       }
     }
   }

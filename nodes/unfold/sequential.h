@@ -49,8 +49,12 @@ struct UnfoldOptions {
 ///      opened along a ruling); indices in range; uvs empty or one per vertex; finite
 ///      coordinates; options' tolerances >= 0.
 /// \throws InvalidInputException if a precondition fails.
-/// Known limit: the split point is where the overlap first occurs, not a balanced one;
-/// a non-manifold edge (three or more triangles) or an inconsistently oriented pair is cut.
+/// Where a strip must be split, it is split into the fewest overlap-free runs of
+/// consecutive triangles, of similar area (no sliver left at the end of a split strip), when
+/// its triangles form one path (every ruled strip); other meshes split where the overlap
+/// first occurs.
+/// Known limit: a non-manifold edge (three or more triangles) or an inconsistently oriented
+/// pair is cut.
 std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id, int first_flat_id,
                                     const UnfoldOptions& options = {});
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,18 +49,22 @@ RefineOptions configured_refinement() {
 struct GraphRun {
   int strips = -1;
   double tolerance = 0.0;  // absolute, as the graph used it
+  PieceLimits limits;      // min_width_mm and min_area_mm2 in model units, as the graph used them
   Mesh loaded;             // the input as the graph's loader read it
 };
 
 // `mesh` through the graph at `tolerance`; also loads the file it wrote as the graph did.
-GraphRun run_graph(const TriangleMesh& mesh, const std::string& tolerance,
-                   const std::string& name) {
-  const auto out = run_pipeline(mesh, tolerance, name, 1, kRefinementOnly);
+GraphRun run_graph(const TriangleMesh& mesh, const std::string& tolerance, const std::string& name,
+                   const PaperSpec& paper = {}) {
+  const auto out = run_pipeline(mesh, tolerance, name, 1, kRefinementOnly, paper);
   GraphRun run;
   EXPECT_TRUE(out.result.ok) << out.result.error;
   if (!out.result.ok) return run;
   run.strips = out.report.at("result").at("strips_3d").get<int>();
   run.tolerance = out.report.at("tolerance").at("absolute").get<double>();
+  const double scale = out.report.at("result").at("mm_per_unit").get<double>();
+  run.limits.min_width = paper.min_width_mm / scale;
+  run.limits.min_area = paper.min_area_mm2 / (scale * scale);
   run.loaded = load_mesh(out.dir.parent_path().parent_path() / (name + ".obj")).mesh;
   return run;
 }
@@ -76,8 +81,9 @@ TEST_P(EngineMatchesGraph, SameStripCountOnEveryComponent) {
     int counted = 0;
     std::size_t refined = 0;
     for (const Mesh& part : segment_none(graph.loaded)) {
-      counted += count_strips(part, graph.tolerance, refine);
-      const std::vector<RefinedStrip> strips = refine_part(part, graph.tolerance, refine);
+      counted += count_strips(part, graph.tolerance, refine, INT_MAX - 1, graph.limits);
+      const std::vector<RefinedStrip> strips =
+          refine_part(part, graph.tolerance, refine, graph.limits);
       refined += strips.size();
       for (const RefinedStrip& strip : strips) {
         EXPECT_TRUE(strip.verdict.accept);
@@ -89,9 +95,9 @@ TEST_P(EngineMatchesGraph, SameStripCountOnEveryComponent) {
     // The cap: one below the count reports cap + 1, the count itself is exact.
     if (graph.strips > 1) {
       const Mesh whole = segment_none(graph.loaded).front();
-      const int alone = count_strips(whole, graph.tolerance, refine);
-      EXPECT_EQ(count_strips(whole, graph.tolerance, refine, alone - 1), alone);
-      EXPECT_EQ(count_strips(whole, graph.tolerance, refine, alone), alone);
+      const int alone = count_strips(whole, graph.tolerance, refine, INT_MAX - 1, graph.limits);
+      EXPECT_EQ(count_strips(whole, graph.tolerance, refine, alone - 1, graph.limits), alone);
+      EXPECT_EQ(count_strips(whole, graph.tolerance, refine, alone, graph.limits), alone);
     }
   }
 }
@@ -115,13 +121,18 @@ TEST(EngineMatchesGraph, FeatureEstimateOfEachPartIsTheGraphsCount) {
     const std::vector<Mesh> parts = segment_feature(tagged);
     SCOPED_TRACE(std::string(shape) + ": " + std::to_string(parts.size()) + " feature parts");
     for (std::size_t i = 0; i < parts.size(); ++i) {
-      const int estimate = count_strips(parts[i], whole.tolerance, refine);
+      const int estimate =
+          count_strips(parts[i], whole.tolerance, refine, INT_MAX - 1, whole.limits);
       const std::string name = std::string(shape) + "_part" + std::to_string(i);
       std::ostringstream absolute;
       absolute.precision(17);
       absolute << whole.tolerance;
-      const GraphRun graph = run_graph(to_triangle_mesh(parts[i]), absolute.str(), name);
+      // The part printed at the whole shape's scale, so its pieces have the same limits.
+      PaperSpec paper;
+      paper.scale = paper.min_width_mm / whole.limits.min_width;
+      const GraphRun graph = run_graph(to_triangle_mesh(parts[i]), absolute.str(), name, paper);
       EXPECT_EQ(graph.tolerance, whole.tolerance);
+      EXPECT_NEAR(graph.limits.min_width, whole.limits.min_width, 1e-12 * whole.limits.min_width);
       EXPECT_EQ(estimate, graph.strips) << "part " << i;
     }
   }

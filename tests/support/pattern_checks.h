@@ -4,12 +4,11 @@
 // per chain on both sides, piece sizes and widths on paper. Reads only the JSON, never the
 // structures that made it.
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -26,7 +25,7 @@ struct SeamFindings {
   int labels = 0;
   int labels_not_two_chains = 0;  // a label whose edges are not one chain on each of two sides
   int labels_with_sides_differing = 0;  // a label whose two sides differ in flat length or edges
-  std::vector<std::string> problems;     // the first few, for messages
+  std::vector<std::string> problems;    // the first few, for messages
 
   bool exact() const {
     return edges_without_one_partner == 0 && edges_of_other_length == 0 &&
@@ -75,8 +74,12 @@ inline SeamFindings check_seams(const nlohmann::json& strips) {
     for (int e = 0; e < static_cast<int>(boundary.size()); ++e) {
       const auto& b = boundary[e];
       if (b.at("kind").get<std::string>() != "seam") continue;
-      Edge edge{s, e, b.at("v0").get<int>(), b.at("v1").get<int>(),
-                b.value("label", std::string()), b.value("neighbour", -1)};
+      Edge edge{s,
+                e,
+                b.at("v0").get<int>(),
+                b.at("v1").get<int>(),
+                b.value("label", std::string()),
+                b.value("neighbour", -1)};
       const auto p = detail::point3(strips[s], edge.v0), q = detail::point3(strips[s], edge.v1);
       by_ends[{p[0], p[1], p[2], q[0], q[1], q[2]}].push_back(static_cast<int>(edges.size()));
       edges.push_back(edge);
@@ -87,8 +90,8 @@ inline SeamFindings check_seams(const nlohmann::json& strips) {
     if (findings.problems.size() < 8) findings.problems.push_back(text);
   };
   auto name = [&](const Edge& e) {
-    return "strip " + strips[e.strip].at("id").dump() + " edge " + std::to_string(e.index) +
-           " (" + e.label + ")";
+    return "strip " + strips[e.strip].at("id").dump() + " edge " + std::to_string(e.index) + " (" +
+           e.label + ")";
   };
   std::vector<int> partner(edges.size(), -1);
   for (int g = 0; g < static_cast<int>(edges.size()); ++g) {
@@ -112,8 +115,8 @@ inline SeamFindings check_seams(const nlohmann::json& strips) {
     const int neighbour_id = strips[o.strip].at("id").get<int>();
     if (o.label != e.label || e.neighbour != neighbour_id) {
       ++findings.edges_with_other_label;
-      problem(name(e) + " is glued to " + name(o) + " (neighbour " +
-              std::to_string(e.neighbour) + ")");
+      problem(name(e) + " is glued to " + name(o) + " (neighbour " + std::to_string(e.neighbour) +
+              ")");
     }
   }
   // Chains: per label, the edges of each strip must form one run of consecutive boundary
@@ -122,23 +125,36 @@ inline SeamFindings check_seams(const nlohmann::json& strips) {
   for (int g = 0; g < static_cast<int>(edges.size()); ++g) by_label[edges[g].label].push_back(g);
   findings.labels = static_cast<int>(by_label.size());
   for (const auto& [label, members] : by_label) {
-    std::map<int, std::vector<int>> per_strip;
-    for (int g : members) per_strip[edges[g].strip].push_back(g);
-    bool chains_ok = per_strip.size() == 2 || per_strip.size() == 1;
-    int runs = 0;
-    for (const auto& [strip, list] : per_strip) {
-      // Runs: edges whose start is no other member's end (in this strip); a closed chain has 0.
-      std::set<int> ends;
-      for (int g : list) ends.insert(edges[g].v1);
-      int starts = 0;
-      for (int g : list) starts += ends.count(edges[g].v0) == 0;
-      runs += std::max(starts, 1);
-    }
-    if (runs != 2) chains_ok = false;
+    // Sides: the label's edges joined where one ends where the next starts on the same strip,
+    // but never an edge to its own partner (a cone's opened ruling: both sides meet at the
+    // apex). Exactly two sides, each one run, glued to each other.
+    std::map<int, int> side_of;
+    for (std::size_t i = 0; i < members.size(); ++i) side_of[members[i]] = static_cast<int>(i);
+    std::vector<int> parent(members.size());
+    for (std::size_t i = 0; i < members.size(); ++i) parent[i] = static_cast<int>(i);
+    auto root = [&](int i) {
+      while (parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    for (int g : members)
+      for (int h : members) {
+        if (g == h || edges[g].strip != edges[h].strip || edges[g].v1 != edges[h].v0) continue;
+        if (partner[g] == h) continue;
+        parent[root(side_of[g])] = root(side_of[h]);
+      }
+    std::set<int> sides;
+    for (int g : members) sides.insert(root(side_of[g]));
+    bool chains_ok = sides.size() == 2;
+    for (int g : members)
+      if (partner[g] >= 0 && side_of.count(partner[g]) &&
+          root(side_of[g]) == root(side_of[partner[g]]))
+        chains_ok = false;
+    std::set<int> strips_of_label;
+    for (int g : members) strips_of_label.insert(edges[g].strip);
     if (!chains_ok) {
       ++findings.labels_not_two_chains;
-      problem("label " + label + " spans " + std::to_string(per_strip.size()) + " strips in " +
-              std::to_string(runs) + " chains");
+      problem("label " + label + " spans " + std::to_string(strips_of_label.size()) +
+              " strips in " + std::to_string(sides.size()) + " chains");
     }
     // Both sides: the partners of the label's edges are exactly its edges (so the label's
     // edges pair up across the seam), each of the same flat length as its partner.

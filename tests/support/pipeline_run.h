@@ -84,7 +84,8 @@ struct PipelineOutput {
 /// Writes `mesh` to a temporary OBJ and runs the config (default: the builtin default) on it.
 inline PipelineOutput run_pipeline(const TriangleMesh& mesh, const std::string& tolerance,
                                    const std::string& name, int threads = 0,
-                                   const std::string& config_text = default_config_text()) {
+                                   const std::string& config_text = default_config_text(),
+                                   const PaperSpec& paper = {}) {
   const auto dir = fresh_temp_dir(name);
   const auto input = dir / (name + ".obj");
   write_mesh_file(mesh, input);
@@ -95,6 +96,7 @@ inline PipelineOutput run_pipeline(const TriangleMesh& mesh, const std::string& 
   settings->output_dir = dir / "out";
   settings->threads = threads;
   settings->config_text = config_text;
+  settings->paper = paper;
   Pipeline pipeline(std::move(config), registry);
   PipelineOptions options;
   options.threads = threads;

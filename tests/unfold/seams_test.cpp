@@ -126,18 +126,26 @@ FlatStrip quad(int id, double x0, double x1, double y0, double y1, std::vector<d
   return s;
 }
 
-// A neighbour whose side has extra vertices: its sub-edges and the long edge are one seam.
-TEST(LabelSeams, CollinearSubSegmentsMatch) {
+// A neighbour whose side has extra vertices (a T-junction: it was cut after this strip was
+// made): the long edge is split at them, in 3D, in 2D and in its triangle, and each piece is
+// glued to exactly one edge of the same length.
+TEST(LabelSeams, TJunctionsAreSplitSoEveryEdgeHasOnePartner) {
   std::vector<FlatStrip> strips = {quad(0, 0.0, 1.0, -1.0, 0.0, {}),
                                    quad(1, 0.0, 1.0, 0.0, 1.0, {0.25, 0.7})};
   auto edge_on_y0 = [](const FlatStrip& s, const BoundaryEdge& e) {
     return s.vertices3d[e.v0].y() == 0.0 && s.vertices3d[e.v1].y() == 0.0;
   };
-  auto without = strips;
-  label_seams(without, SeamOptions{.match_collinear = false});
-  for (const FlatStrip& s : without)
+  auto unsplit = strips;
+  label_seams(unsplit);
+  for (const FlatStrip& s : unsplit)
     for (const BoundaryEdge& e : s.boundary) EXPECT_EQ(e.kind, EdgeKind::Open);
 
+  const double area_before = strips[0].triangles.size();
+  EXPECT_EQ(split_t_junctions(strips), 2);
+  EXPECT_EQ(split_t_junctions(strips), 0) << "a second pass finds nothing";
+  EXPECT_EQ(strips[0].triangles.size(), area_before + 2);
+  EXPECT_EQ(strips[0].vertices3d.size(), 6u);
+  EXPECT_EQ(first_clockwise_triangle(strips[0].vertices2d, strips[0].triangles, 1e-12), -1);
   label_seams(strips);
   expect_seam_or_open(strips);
   std::set<std::string> labels;
@@ -149,14 +157,26 @@ TEST(LabelSeams, CollinearSubSegmentsMatch) {
       if (!shared) continue;
       ++seams;
       EXPECT_EQ(e.neighbour_strip, 1 - k);
+      const BoundaryEdge& partner = strips[1 - k].boundary.at(e.partner_edge);
+      EXPECT_EQ(strips[1 - k].vertices3d[partner.v0], strips[k].vertices3d[e.v1]);
+      EXPECT_EQ(strips[1 - k].vertices3d[partner.v1], strips[k].vertices3d[e.v0]);
+      const double here = (strips[k].vertices2d[e.v1] - strips[k].vertices2d[e.v0]).norm();
+      const double there =
+          (strips[1 - k].vertices2d[partner.v1] - strips[1 - k].vertices2d[partner.v0]).norm();
+      EXPECT_NEAR(here, there, 1e-12);
       labels.insert(e.label);
     }
-  EXPECT_EQ(seams, 4);  // one long edge against three short ones
+  EXPECT_EQ(seams, 6);  // three pieces of the long edge against three short ones
   EXPECT_EQ(labels.size(), 1u);
+  const std::vector<SeamChain> chains = labelled_chains(strips);
+  ASSERT_EQ(chains.size(), 1u);
+  EXPECT_EQ(chains[0].sides[0].edges.size(), 3u);
+  EXPECT_EQ(chains[0].sides[1].edges.size(), 3u);
+  EXPECT_NE(chains[0].sides[0].strip, chains[0].sides[1].strip);
 }
 
-// Three strips on one edge: the two traversing it oppositely pair up, the third is glued to
-// the first; all three are one seam, the same on every run.
+// Three strips on one edge: the two traversing it oppositely pair up, the third stays open
+// (an edge has one partner); the same on every run.
 TEST(LabelSeams, EdgeWithSeveralPartnersIsPairedDeterministically) {
   std::vector<FlatStrip> strips = {quad(0, 0.0, 1.0, -1.0, 0.0, {}),
                                    quad(1, 0.0, 1.0, 0.0, 1.0, {}),
@@ -178,9 +198,32 @@ TEST(LabelSeams, EdgeWithSeveralPartnersIsPairedDeterministically) {
       neighbours.push_back(edge.neighbour_strip);
       labels.insert(edge.label);
     }
-  // Strip 0 runs (1,0)->(0,0), strips 1 and 2 run (0,0)->(1,0): 0 pairs with 1, 2 with 0.
-  EXPECT_EQ(neighbours, (std::vector<int>{1, 0, 0}));
+  // Strip 0 runs (1,0)->(0,0), strips 1 and 2 run (0,0)->(1,0): 0 pairs with 1.
+  EXPECT_EQ(neighbours, (std::vector<int>{1, 0}));
   EXPECT_EQ(labels.size(), 1u);
+}
+
+// One label per chain shared by two strips: a strip glued along one boundary to two others
+// gets two labels, where the old rule joined them through the shared vertex.
+TEST(LabelSeams, ALabelNamesOneChainBetweenTwoStrips) {
+  std::vector<FlatStrip> strips = {quad(0, 0.0, 2.0, -1.0, 0.0, {1.0}),
+                                   quad(1, 0.0, 1.0, 0.0, 1.0, {}),
+                                   quad(2, 1.0, 2.0, 0.0, 1.0, {})};
+  // Strip 0's top edge is a single edge (0,0)-(2,0) whose partners are split by vertex (1,0).
+  split_t_junctions(strips);
+  label_seams(strips);
+  std::set<std::string> to1, to2;
+  for (const BoundaryEdge& e : strips[0].boundary) {
+    if (e.neighbour_strip == 1) to1.insert(e.label);
+    if (e.neighbour_strip == 2) to2.insert(e.label);
+  }
+  ASSERT_EQ(to1.size(), 1u);
+  ASSERT_EQ(to2.size(), 1u);
+  EXPECT_NE(*to1.begin(), *to2.begin());
+  for (const SeamChain& chain : labelled_chains(strips)) {
+    EXPECT_EQ(chain.sides[0].edges.size(), chain.sides[1].edges.size()) << chain.label;
+    EXPECT_GE(chain.sides[1].strip, 0) << chain.label;
+  }
 }
 
 // Two separate shared boundaries get two labels, numbered in strip order.

@@ -1,0 +1,33 @@
+#include "core/piece_limits.h"
+
+#include <algorithm>
+
+#include "core/piece_width.h"
+
+namespace papercraft {
+
+double piece_shortfall(const Mesh& piece, const PieceLimits& limits) {
+  if (!limits.active()) return 0.0;
+  double shortfall = 0.0;
+  if (limits.min_area > 0.0) {
+    const double area = surface_area(piece);
+    if (area < limits.min_area) shortfall = 1.0 - area / limits.min_area;
+  }
+  if (limits.min_width > 0.0) {
+    // A coarse raster: the judgement is about tips against bands, not the last percent.
+    PieceWidthOptions options;
+    options.cell_fraction = 0.25;
+    options.max_cells = 100'000;
+    const double narrow = narrow_area_fraction(to_triangle_mesh(piece), limits.min_width, options);
+    if (narrow > limits.max_narrow_share)
+      shortfall =
+          std::max(shortfall, (narrow - limits.max_narrow_share) / (1.0 - limits.max_narrow_share));
+  }
+  return shortfall;
+}
+
+bool piece_fits(const Mesh& piece, const PieceLimits& limits) {
+  return piece_shortfall(piece, limits) == 0.0;
+}
+
+}  // namespace papercraft
