@@ -98,6 +98,9 @@ struct PlacedPiece {
   std::vector<FoldLine> folds;  // inner edges only; tab bases are in `tabs`
   std::vector<Tab> tabs;
   std::vector<Label> labels;  // one per seam side on this piece
+  /// Alignment marks: a short tick across the cut line at each end of a seam chain where it
+  /// meets another seam, printed on both pieces so that long seams are glued in register.
+  std::vector<std::array<Vec2, 2>> marks;
   Label number;               // "12", or "12.3" for the third piece of split strip 12
 };
 

@@ -59,6 +59,11 @@ nlohmann::json model_report(const ModelRun& model) {
       {"given", spec.to_string()},
       {"absolute", record.tolerance},
       {"relative_percent", largest > 0 ? 100.0 * record.tolerance / largest : 0.0}};
+  const PaperSpec& paper = model.settings->paper;
+  report["paper"] = {{"mm_per_unit", record.mm_per_unit},
+                     {"height_mm", record.mm_per_unit * largest},
+                     {"min_width_mm", paper.min_width_mm},
+                     {"min_area_mm2", paper.min_area_mm2}};
   report["result"] = {
       {"certified", record.certified},
       {"hausdorff_bound", record.hausdorff_bound},

@@ -158,6 +158,11 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
     if (!hills.polylines.empty()) mountain.paths.push_back(std::move(hills));
     if (!dales.polylines.empty()) valley.paths.push_back(std::move(dales));
     if (!flaps.polylines.empty()) tabs.paths.push_back(std::move(flaps));
+    if (!piece.marks.empty()) {
+      DrawPath marks{{}, false, true, pens.print, ""};
+      for (const auto& mark : piece.marks) marks.polylines.push_back({mark[0], mark[1]});
+      print.paths.push_back(std::move(marks));
+    }
     for (const Label& label : piece.labels) labels.texts.push_back({label, pens.text});
     labels.texts.push_back({piece.number, pens.text});
   }

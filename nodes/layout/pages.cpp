@@ -463,6 +463,7 @@ struct Piece {
   std::vector<PieceTab> tabs;
   std::vector<PieceLabel> labels;
   std::optional<PieceLabel> number;  // set by arrange_labels
+  std::vector<std::array<Vec2, 2>> marks;  // strip frame mm (see PlacedPiece::marks)
 };
 
 std::string strip_name(const FlatStrip& strip) {
@@ -968,6 +969,24 @@ std::vector<SeamPair> pair_chains(const std::vector<Chain>& chains, const SeamEd
     pairs.insert(pairs.end(), these.begin(), these.end());
   }
   return pairs;
+}
+
+// Ticks of `length` across the cut line at the ends of `chain` where the boundary goes on
+// as another seam: the places where two seams meet, printed on both pieces.
+void add_alignment_marks(const StripData& data, Piece& piece, const Chain& chain, double length) {
+  if (chain.closed || length <= 0.0) return;
+  const auto& loop = piece.loops[chain.loop];
+  const int n = static_cast<int>(loop.size());
+  auto tick = [&](int vertex, int edge) {
+    const Vec2 d = data.points[loop[edge].v1] - data.points[loop[edge].v0];
+    if (d.norm() == 0.0) return;
+    const Vec2 across = Vec2(-d.y(), d.x()).normalized() * (0.5 * length);
+    const Vec2& at = data.points[vertex];
+    piece.marks.push_back({at - across, at + across});
+  };
+  const int first = chain.start, last = (chain.start + chain.count - 1) % n;
+  if (loop[(first + n - 1) % n].kind == EdgeKind::Seam) tick(loop[first].v0, first);
+  if (loop[(last + 1) % n].kind == EdgeKind::Seam) tick(loop[last].v1, last);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1830,6 +1849,7 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
     }
     placed.tabs.push_back(std::move(tab));
   }
+  for (const auto& mark : piece.marks) placed.marks.push_back({to_page(mark[0]), to_page(mark[1])});
   for (const PieceLabel& label : piece.labels)
     placed.labels.push_back(
         {label.text, to_page(label.position), direction_degrees(label.direction), label.size});
@@ -1941,6 +1961,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
       piece.labels.push_back(
           chain_label(p.strips[piece.strip], piece, chain, pair.printed, options.label_size_mm));
       piece.labels.back().chain = side;
+      add_alignment_marks(p.strips[piece.strip], piece, chain, options.alignment_mark_mm);
     }
   }
   if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);

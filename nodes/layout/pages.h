@@ -68,6 +68,7 @@ struct LayoutOptions {
   double strong_fold_angle_degrees = 10.0;
   double spacing_mm = 2.0;      // gap between the bounding boxes of pieces
   double label_size_mm = 2.5;   // seam label text height
+  double alignment_mark_mm = 3.0;  // tick across the cut line where two seams meet (0: none)
   double number_size_mm = 4.0;  // piece number text height (smaller on thin pieces)
   double footer_mm = 8.0;       // band at the bottom of the printable area: scale bar
   PackingMethod packing = PackingMethod::MaxRects;

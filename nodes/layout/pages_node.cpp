@@ -38,6 +38,10 @@ void register_layout_pages(Registry& registry) {
               "tab_width_mm", [](O & o) -> auto& { return o.tab_width_mm; },
               "glue tab width (0: no tabs)", at_least(0))
           .add(
+              "alignment_mark_mm", [](O & o) -> auto& { return o.alignment_mark_mm; },
+              "tick printed across the cut line where two seams meet, on both pieces (0: none)",
+              at_least(0))
+          .add(
               "fold_angle_degrees", [](O & o) -> auto& { return o.fold_angle_degrees; },
               "inner edges bent more than this get a fold line", between(0, 180))
           .add(

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/piece_width.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
@@ -37,24 +38,36 @@ void record(ModelRun& model, const ModelStrips& strips) {
   });
 }
 
-// The pieces a person cannot handle, named in report.json and on stderr.
-void note_small_pieces(ModelRun& model, const std::vector<FlatStrip>& strips,
-                       const std::vector<int>& small) {
+// The pieces a person cannot handle, named in report.json and on stderr: those too small that
+// no neighbour takes, and those narrower than min_width_mm over more than their tips.
+void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& strips,
+                             const std::vector<int>& small) {
   const double scale = model.mm_per_unit();
-  for (int id : small) {
-    for (const FlatStrip& strip : strips) {
-      if (strip.id != id) continue;
+  const PieceLimits limits = model.piece_limits();
+  for (const FlatStrip& strip : strips) {
+    if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
       double area = 0.0;
       for (const Triangle& t : strip.triangles) {
         const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
         const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
         area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
       }
-      const std::string text = "flat strip " + std::to_string(id) + " is " +
-                               std::to_string(static_cast<int>(std::lround(area * scale * scale))) +
+      const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
+                               std::to_string(std::lround(area * scale * scale)) +
                                " mm^2, below min_area_mm2, and no neighbour takes it";
       model.note(text);
       spdlog::warn("{}: {}", model.name, text);
+    }
+    if (limits.min_width > 0.0) {
+      const double narrow =
+          narrow_area_fraction(strip.vertices2d, strip.triangles, limits.min_width);
+      if (narrow > limits.max_narrow_share) {
+        const std::string text = "flat strip " + std::to_string(strip.id) + " is narrower than " +
+                                 "min_width_mm over " + std::to_string(std::lround(100 * narrow)) +
+                                 "% of its area";
+        model.note(text);
+        spdlog::warn("{}: {}", model.name, text);
+      }
     }
   }
 }
@@ -83,7 +96,7 @@ void register_merge_congruent(Registry& registry) {
                     std::vector<int> small;
                     strips.flat = join_small_strips(
                         std::move(strips.flat), in.model->piece_limits().min_area, options, &small);
-                    note_small_pieces(*in.model, strips.flat, small);
+                    note_unbuildable_pieces(*in.model, strips.flat, small);
                     record(*in.model, strips);
                     out.emit("out", std::move(strips));
                   });

@@ -33,6 +33,20 @@ TEST(ConfigErrors, UnknownTopLevelKey) {
   expect_error("nodez: {}\n", 1, 1, {"unknown key 'nodez'", "nodes"});
 }
 
+TEST(ConfigErrors, PaperLimitsMustBeNumbersAtLeastZero) {
+  const std::string nodes = "nodes:\n  source: {impl: test.source}\n";
+  expect_error("min_width_mm: -5\n" + nodes, 1, 15, {"min_width_mm must be at least 0", "-5"});
+  expect_error("min_area_mm2: lots\n" + nodes, 1, 15, {"min_area_mm2: expected a number"});
+  expect_error("height_mm: 0\n" + nodes, 1, 12, {"height_mm must be greater than 0"});
+  static const Registry registry = testing::test_registry();
+  const PipelineConfig config = parse_pipeline_config(
+      "min_width_mm: 0\nmin_area_mm2: 250\nscale: 2.5\n" + nodes, "cfg.yaml", registry);
+  EXPECT_EQ(config.min_width_mm, 0.0);
+  EXPECT_EQ(config.min_area_mm2, 250.0);
+  EXPECT_EQ(config.scale, 2.5);
+  EXPECT_FALSE(config.height_mm.has_value());
+}
+
 TEST(ConfigErrors, UnknownNodeKey) {
   expect_error("nodes:\n  source: {impl: test.source, too: [x]}\n", 2, 31,
                {"unknown key 'too'", "node 'source'"});

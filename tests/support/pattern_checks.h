@@ -177,7 +177,8 @@ inline SeamFindings check_seams(const nlohmann::json& strips) {
       ++findings.labels_with_sides_differing;
       std::string sides;
       for (const auto& [strip, total] : length)
-        sides += " " + strips[strip].at("id").dump() + ":" + std::to_string(total);
+        sides.append(" ").append(strips[strip].at("id").dump()).append(":").append(
+            std::to_string(total));
       problem("label " + label + " has sides that differ (length per strip" + sides + ")");
     }
   }
