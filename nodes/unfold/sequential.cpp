@@ -188,6 +188,39 @@ std::vector<std::vector<int>> balanced_runs(const RuledStrip& strip,
   return result;
 }
 
+// Where both copies of each end of the opened ruling (3D points p and q) lie within `reach` of
+// each other on paper, the later copies become the earlier ones (and are dropped).
+void weld_flat_ruling(FlatStrip& flat, const Vec3& p, const Vec3& q, double reach) {
+  std::vector<int> remap(flat.vertices3d.size());
+  for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<int>(v);
+  for (const Vec3* end : {&p, &q}) {
+    std::vector<int> copies;
+    for (std::size_t v = 0; v < flat.vertices3d.size(); ++v)
+      if (flat.vertices3d[v] == *end) copies.push_back(static_cast<int>(v));
+    if (copies.size() == 1) continue;  // a cone's apex: placed once
+    if (copies.size() != 2) return;
+    if ((flat.vertices2d[copies[0]] - flat.vertices2d[copies[1]]).norm() > reach) return;
+    remap[copies[1]] = copies[0];
+  }
+  bool welds = false;
+  for (std::size_t v = 0; v < remap.size(); ++v) welds = welds || remap[v] != static_cast<int>(v);
+  if (!welds) return;
+  std::vector<int> index(remap.size(), -1);
+  FlatStrip welded;
+  for (std::size_t v = 0; v < remap.size(); ++v) {
+    if (remap[v] != static_cast<int>(v)) continue;
+    index[v] = static_cast<int>(welded.vertices3d.size());
+    welded.vertices3d.push_back(flat.vertices3d[v]);
+    welded.vertices2d.push_back(flat.vertices2d[v]);
+    if (!flat.uvs.empty()) welded.uvs.push_back(flat.uvs[v]);
+  }
+  for (Triangle t : flat.triangles) {
+    for (int& v : t) v = index[remap[v]];
+    welded.triangles.push_back(t);
+  }
+  flat = std::move(welded);
+}
+
 }  // namespace
 
 std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id, int first_flat_id,
@@ -231,6 +264,7 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
   // Open a closed strip along its shortest ruling (an edge joining A and B).
   const bool closed = (strip.a_closed && (strip.b_closed || strip.b_count == 1)) ||
                       (strip.b_closed && strip.a_count == 1);
+  std::pair<int, int> opened{-1, -1};  // the ruling a closed strip is opened along
   if (closed) {
     double shortest = std::numeric_limits<double>::infinity();
     for (const auto& [u, v] : dual_edges)
@@ -241,6 +275,7 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
       if ((vertices[u] - vertices[v]).norm() > shortest * (1.0 + options.ruling_tie_tolerance))
         continue;
       for (auto [t, i] : edge_faces.at({u, v})) neighbour[t][i] = -1;
+      opened = {u, v};
       break;
     }
   }
@@ -360,6 +395,12 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
       }
     }
   }
+
+  // A closed strip that lies flat (a disc fanned from a point in its plane, a flat ring)
+  // closes up on paper: its opened ruling lands on itself, and welding it leaves no slit.
+  if (builders.size() == 1 && opened.first >= 0)
+    weld_flat_ruling(builders.front().flat, vertices[opened.first], vertices[opened.second],
+                     options.flat_close_tolerance * mean_edge);
 
   std::vector<FlatStrip> result;
   result.reserve(builders.size());

@@ -25,6 +25,10 @@ struct UnfoldOptions {
   /// length of the shortest count as equally short and the first in vertex order wins, so
   /// the choice is stable under rounding (a cylinder opens at A's first vertex).
   double ruling_tie_tolerance = 1e-9;
+  /// A closed strip that unfolds into one piece whose opened ruling lands on itself (both
+  /// copies within this times the mean edge length: the strip lies flat, as a cap does) is
+  /// welded shut there: no slit is cut into a flat piece.
+  double flat_close_tolerance = 1e-9;
 };
 
 /// Unfolds `strip` into one or more flat strips (several only where one would overlap

@@ -221,6 +221,21 @@ TEST(UnfoldSequential, DegenerateTrianglesStayFinite) {
   EXPECT_EQ(triangles, strip.mesh.triangles.size() - 1);
 }
 
+// A flat disc fanned from its centre lies flat in one piece: no radial slit, only the rim
+// is boundary. A cone (not flat) keeps its opened ruling.
+TEST(UnfoldSequential, FlatCapClosesWithoutASlit) {
+  const int n = 24;
+  std::vector<Vec3> rim;
+  for (int i = 0; i < n; ++i) rim.push_back(unfold_testing::circle_point(1.0, i, n, 0.0));
+  const auto flat = unfold_strip(unfold_testing::fan_strip(rim, Vec3(0.1, -0.2, 0.0), true), 0, 0);
+  ASSERT_EQ(flat.size(), 1u);
+  EXPECT_EQ(flat[0].boundary.size(), static_cast<std::size_t>(n));
+  EXPECT_EQ(flat[0].vertices2d.size(), static_cast<std::size_t>(n + 1));
+  const auto cone = unfold_strip(unfold_testing::fan_strip(rim, Vec3(0.0, 0.0, 0.8), true), 0, 0);
+  ASSERT_EQ(cone.size(), 1u);
+  EXPECT_EQ(cone[0].boundary.size(), static_cast<std::size_t>(n + 2));
+}
+
 TEST(UnfoldSequential, BadInputThrows) {
   RuledStrip strip = ring_strip(1.0, 0.0, 1.0, 1.0, 8);
   RuledStrip bad_index = strip;
