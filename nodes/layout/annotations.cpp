@@ -1,0 +1,226 @@
+// Seam labels, piece numbers, fold lines and alignment marks on the pieces, and label_box.
+#include "nodes/layout/annotations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <utility>
+
+#include "core/edge_map.h"
+#include "nodes/layout/piece_shapes.h"
+
+namespace papercraft::layout_internal {
+namespace {
+
+// Where the piece number goes: the incentre of a triangle with (nearly) the largest
+// inscribed circle, the one nearest the piece's centroid; and that circle's radius.
+std::pair<Vec2, double> number_spot(const StripData& data, const Piece& piece) {
+  struct Candidate {
+    Vec2 centre;
+    double radius;
+  };
+  std::vector<Candidate> candidates;
+  Vec2 centroid = Vec2::Zero();
+  double area = 0, largest = 0;
+  for (int t : piece.triangles) {
+    const Triangle& tri = data.strip->triangles[t];
+    const Vec2 &a = data.points[tri[0]], &b = data.points[tri[1]], &c = data.points[tri[2]];
+    const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+    const double perimeter = la + lb + lc;
+    if (perimeter <= 0) continue;
+    const double twice_area = std::abs(cross(b - a, c - a));
+    centroid += twice_area * (a + b + c) / 3.0;
+    area += twice_area;
+    candidates.push_back({(la * a + lb * b + lc * c) / perimeter, twice_area / perimeter});
+    largest = std::max(largest, candidates.back().radius);
+  }
+  if (candidates.empty()) return {data.points[data.strip->triangles[piece.triangles[0]][0]], 0};
+  if (area > 0) centroid /= area;
+  const Candidate* best = nullptr;
+  for (const Candidate& c : candidates)
+    if (c.radius >= 0.8 * largest &&
+        (!best || (c.centre - centroid).norm() < (best->centre - centroid).norm()))
+      best = &c;
+  return {best->centre, best->radius};
+}
+
+}  // namespace
+
+void add_alignment_marks(const StripData& data, Piece& piece, const Chain& chain, double length) {
+  if (chain.closed || length <= 0.0) return;
+  const auto& loop = piece.loops[chain.loop];
+  const int n = static_cast<int>(loop.size());
+  auto tick = [&](int vertex, int edge) {
+    const Vec2 d = data.points[loop[edge].v1] - data.points[loop[edge].v0];
+    if (d.norm() == 0.0) return;
+    const Vec2 across = Vec2(-d.y(), d.x()).normalized() * (0.5 * length);
+    const Vec2& at = data.points[vertex];
+    piece.marks.push_back({at - across, at + across});
+  };
+  const int first = chain.start, last = (chain.start + chain.count - 1) % n;
+  if (loop[(first + n - 1) % n].kind == EdgeKind::Seam) tick(loop[first].v0, first);
+  if (loop[(last + 1) % n].kind == EdgeKind::Seam) tick(loop[last].v1, last);
+}
+
+PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& chain,
+                       const std::string& text, double size) {
+  const auto& loop = piece.loops[chain.loop];
+  const double total = chain_length(data, piece, chain);
+  const double text_width = 0.6 * static_cast<double>(text.size());
+  size = std::max(std::min(size, (total - 0.5) / std::max(text_width, 1e-9)), std::min(size, 1.5));
+  // The edge at the chain's middle (a closed chain has none: its longest edge), with the
+  // text kept clear of the edge's corners where the edge is long enough.
+  int chosen = 0;
+  double at = 0.5;
+  double walked = 0, longest = -1;
+  for (int i = 0; i < chain.count; ++i) {
+    const PieceEdge& e = loop[(chain.start + i) % loop.size()];
+    const double length = (data.points[e.v1] - data.points[e.v0]).norm();
+    if (chain.closed) {
+      if (length > longest) {
+        longest = length;
+        chosen = i;
+      }
+    } else if (walked + length >= 0.5 * total || i == chain.count - 1) {
+      chosen = i;
+      at = length > 0 ? std::clamp((0.5 * total - walked) / length, 0.0, 1.0) : 0.5;
+      break;
+    }
+    walked += length;
+  }
+  const PieceEdge& e = loop[(chain.start + chosen) % loop.size()];
+  const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+  const double length = (b - a).norm();
+  const double clearance = 0.5 * text_width * size + 0.5;
+  if (length > 2 * clearance)
+    at = std::clamp(at, clearance / length, 1.0 - clearance / length);
+  else
+    at = 0.5;
+  const Vec2 d = length > 0 ? Vec2((b - a) / length) : Vec2::UnitX();
+  return {text, a + at * (b - a) + Vec2(-d.y(), d.x()) * (0.6 * size + 0.6), d, size};
+}
+
+std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
+                                  double threshold_degrees, double strong_degrees) {
+  const FlatStrip& strip = *data.strip;
+  std::unordered_map<int, char> in_piece;
+  for (int t : piece.triangles) in_piece[t] = 1;
+  std::vector<FoldLine> folds;  // in the strip frame; placed later
+  for (int t : piece.triangles) {
+    const Triangle& tri = strip.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri[i], b = tri[(i + 1) % 3], c = tri[(i + 2) % 3];
+      if (a > b) continue;
+      auto it = data.owner.find(directed_edge_key(b, a));
+      if (it == data.owner.end() || !in_piece.count(it->second)) continue;
+      const Triangle& other = strip.triangles[it->second];
+      int d = -1;
+      for (int k = 0; k < 3; ++k)
+        if (other[k] != a && other[k] != b) d = other[k];
+      const Vec3 &pa = strip.vertices3d[a], &pb = strip.vertices3d[b];
+      const Vec3 n1 = (pb - pa).cross(strip.vertices3d[c] - pa);
+      const Vec3 n2 = (pa - pb).cross(strip.vertices3d[d] - pb);
+      if (n1.norm() == 0 || n2.norm() == 0) continue;
+      const double bend =
+          std::acos(std::clamp(n1.normalized().dot(n2.normalized()), -1.0, 1.0)) / kDegree;
+      if (bend <= threshold_degrees) continue;
+      const bool convex = (strip.vertices3d[d] - pa).dot(n1) < 0;
+      folds.push_back({data.points[a], data.points[b],
+                       convex ? FoldKind::Mountain : FoldKind::Valley, bend,
+                       bend < strong_degrees});
+    }
+  }
+  return folds;
+}
+
+PieceLabel piece_number(const StripData& data, const Piece& piece, const OrientedBox& box,
+                        const LayoutOptions& options) {
+  auto [centre, radius] = number_spot(data, piece);
+  PieceLabel number;
+  number.text = std::to_string(data.strip->id);
+  // Appended in two steps: GCC 12 warns (-Wrestrict, a false positive) on "." + to_string here.
+  if (piece.count > 1) number.text.append(".").append(std::to_string(piece.index + 1));
+  number.position = centre;
+  number.size = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
+  number.direction = Vec2(std::cos(box.angle), std::sin(box.angle));
+  return number;
+}
+
+void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
+                    const OrientedBox& box, const LayoutOptions& options) {
+  const PieceShapes shapes = piece_shapes(data, piece);
+  piece.number = piece_number(data, piece, box, options);
+  std::vector<std::array<Vec2, 4>> taken;
+  taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                           piece.number->text.size()));
+  auto clear = [&](const std::array<Vec2, 4>& candidate) {
+    for (const auto& other : taken)
+      if (convex_overlap(candidate.data(), 4, other.data(), 4, 0.0)) return false;
+    return true;
+  };
+  for (PieceLabel& label : piece.labels) {
+    if (label.chain < 0) continue;
+    const Chain& chain = chains[label.chain];
+    const auto& loop = piece.loops[chain.loop];
+    const double total = chain_length(data, piece, chain);
+    auto point_at = [&](double at, Vec2* direction) {
+      double walked = 0;
+      for (int i = 0; i < chain.count; ++i) {
+        const PieceEdge& e = loop[(chain.start + i) % loop.size()];
+        const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+        const double length = (b - a).norm();
+        if (length <= 0) continue;
+        if (walked + length >= at || i == chain.count - 1) {
+          *direction = (b - a) / length;
+          return Vec2(a + std::clamp((at - walked) / length, 0.0, 1.0) * (b - a));
+        }
+        walked += length;
+      }
+      *direction = Vec2::UnitX();
+      return label.position;
+    };
+    bool placed = false;
+    const auto first_box = text_box(label.position, label.direction, label.size, label.text.size());
+    if (box_on_piece(first_box, shapes) && clear(first_box)) {
+      taken.push_back(first_box);
+      continue;
+    }
+    for (double size : {label.size, 0.8 * label.size, 0.65 * label.size, 0.5 * label.size}) {
+      if (size < std::min(1.2, label.size) - 1e-12) break;
+      for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.05, 0.95}) {
+        for (double gap : {0.6, 0.3, 1.2}) {
+          Vec2 direction;
+          const Vec2 on_edge = point_at(fraction * total, &direction);
+          const Vec2 centre =
+              on_edge + Vec2(-direction.y(), direction.x()) * (kHalfLineEm * size + gap);
+          const auto candidate = text_box(centre, direction, size, label.text.size());
+          if (!box_on_piece(candidate, shapes) || !clear(candidate)) continue;
+          label.position = centre;
+          label.direction = direction;
+          label.size = size;
+          taken.push_back(candidate);
+          placed = true;
+          break;
+        }
+        if (placed) break;
+      }
+      if (placed) break;
+    }
+    if (!placed) taken.push_back(first_box);
+  }
+}
+
+}  // namespace papercraft::layout_internal
+
+namespace papercraft {
+
+using layout_internal::kDegree;
+using layout_internal::text_box;
+
+std::array<Vec2, 4> label_box(const Label& label) {
+  const double angle = label.angle_degrees * kDegree;
+  return text_box(label.position, Vec2(std::cos(angle), std::sin(angle)), label.size_mm,
+                  label.text.size());
+}
+
+}  // namespace papercraft

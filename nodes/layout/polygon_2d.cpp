@@ -1,0 +1,158 @@
+// Plane geometry of the layout: convex hulls, oriented bounding boxes (rotating calipers),
+// polygon clipping, convex overlap tests and text boxes.
+#include "nodes/layout/polygon_2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace papercraft::layout_internal {
+namespace {
+
+Vec2 rotate(const Vec2& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+OrientedBox oriented_box(const std::vector<Vec2>& hull, double angle) {
+  OrientedBox box;
+  box.angle = angle;
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
+  Vec2 hi = -lo;
+  for (const Vec2& p : hull) {
+    Vec2 q = rotate(p, -angle);
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  box.min = lo;
+  box.size = hi - lo;
+  return box;
+}
+
+// Rotating calipers: the minimal-area rectangle has a side on a hull edge. The 1 degree
+// samples add orientations that fit a page where the minimal-area one does not.
+std::vector<double> candidate_angles(const std::vector<Vec2>& hull) {
+  std::vector<double> angles;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    Vec2 d = hull[(i + 1) % hull.size()] - hull[i];
+    if (d.squaredNorm() > 0) angles.push_back(std::atan2(d.y(), d.x()));
+  }
+  for (int degree = 0; degree < 180; ++degree) angles.push_back(degree * kDegree);
+  return angles;
+}
+
+}  // namespace
+
+double signed_area(const std::vector<Vec2>& polygon) {
+  double area = 0.0;
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    area += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
+  return 0.5 * area;
+}
+
+std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(), [](const Vec2& a, const Vec2& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  std::vector<Vec2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+bool fits_area(const Vec2& size, double width, double height) {
+  return (size.x() <= width + kFitSlack && size.y() <= height + kFitSlack) ||
+         (size.y() <= width + kFitSlack && size.x() <= height + kFitSlack);
+}
+
+OrientedBox tightest_box(const std::vector<Vec2>& hull, double width, double height, bool* fits) {
+  std::optional<OrientedBox> best_fitting, best_any;
+  for (double angle : candidate_angles(hull)) {
+    OrientedBox box = oriented_box(hull, angle);
+    const double area = box.size.x() * box.size.y();
+    auto better = [&](const std::optional<OrientedBox>& current) {
+      if (!current) return true;
+      const double current_area = current->size.x() * current->size.y();
+      if (area < current_area - 1e-9) return true;
+      return area <= current_area + 1e-9 &&
+             std::min(box.size.x(), box.size.y()) <
+                 std::min(current->size.x(), current->size.y()) - 1e-9;
+    };
+    if (better(best_any)) best_any = box;
+    if (fits_area(box.size, width, height) && better(best_fitting)) best_fitting = box;
+  }
+  *fits = best_fitting.has_value();
+  OrientedBox box = best_fitting ? *best_fitting : *best_any;
+  if (box.size.y() > box.size.x()) box = oriented_box(hull, box.angle + std::numbers::pi / 2);
+  return box;
+}
+
+bool hull_fits(const std::vector<Vec2>& hull, double width, double height) {
+  if (width <= 0 || height <= 0) return false;
+  for (double angle : candidate_angles(hull))
+    if (fits_area(oriented_box(hull, angle).size, width, height)) return true;
+  return false;
+}
+
+bool convex_overlap(const Vec2* a, int na, const Vec2* b, int nb, double depth) {
+  bool tested = false;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Vec2* poly = pass == 0 ? a : b;
+    const int n = pass == 0 ? na : nb;
+    for (int i = 0; i < n; ++i) {
+      Vec2 edge = poly[(i + 1) % n] - poly[i];
+      const double length = edge.norm();
+      if (length <= 1e-12) continue;
+      Vec2 axis = Vec2(-edge.y(), edge.x()) / length;
+      double amin = std::numeric_limits<double>::infinity(), amax = -amin;
+      double bmin = amin, bmax = amax;
+      for (int k = 0; k < na; ++k) {
+        const double t = a[k].dot(axis);
+        amin = std::min(amin, t);
+        amax = std::max(amax, t);
+      }
+      for (int k = 0; k < nb; ++k) {
+        const double t = b[k].dot(axis);
+        bmin = std::min(bmin, t);
+        bmax = std::max(bmax, t);
+      }
+      tested = true;
+      if (amax <= bmin + depth || bmax <= amin + depth) return false;
+    }
+  }
+  return tested;
+}
+
+std::vector<Vec2> clip(const std::vector<Vec2>& polygon,
+                       const std::function<double(const Vec2&)>& side) {
+  std::vector<Vec2> out;
+  const std::size_t n = polygon.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 &a = polygon[i], &b = polygon[(i + 1) % n];
+    const double sa = side(a), sb = side(b);
+    if (sa >= 0) out.push_back(a);
+    if ((sa >= 0) != (sb >= 0)) out.push_back(a + (sa / (sa - sb)) * (b - a));
+  }
+  return out;
+}
+
+std::array<Vec2, 4> text_box(const Vec2& centre, const Vec2& direction, double size,
+                             std::size_t characters) {
+  const Vec2 along = direction.normalized() * (0.5 * kCharWidthEm * size * characters + 0.1 * size);
+  const Vec2 across = Vec2(-direction.y(), direction.x()).normalized() * (kHalfLineEm * size);
+  return {centre - along - across, centre + along - across, centre + along + across,
+          centre - along + across};
+}
+
+}  // namespace papercraft::layout_internal

@@ -1,0 +1,188 @@
+// Splitting a strip that fits no page into pieces that do, cut at inner edges.
+#include "nodes/layout/split_to_fit.h"
+
+#include <algorithm>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+
+#include "core/edge_map.h"
+#include "nodes/layout/polygon_2d.h"
+
+namespace papercraft::layout_internal {
+namespace {
+
+// Connected components of a triangle set over shared inner edges.
+std::vector<std::vector<int>> components(const StripData& data, const std::vector<int>& set) {
+  std::unordered_map<int, int> component;
+  for (int t : set) component[t] = -1;
+  std::vector<std::vector<int>> result;
+  for (int seed : set) {
+    if (component[seed] >= 0) continue;
+    const int id = static_cast<int>(result.size());
+    result.emplace_back();
+    std::vector<int> stack{seed};
+    component[seed] = id;
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      result[id].push_back(t);
+      const Triangle& tri = data.strip->triangles[t];
+      for (int i = 0; i < 3; ++i) {
+        auto it = data.owner.find(directed_edge_key(tri[(i + 1) % 3], tri[i]));
+        if (it == data.owner.end()) continue;
+        auto c = component.find(it->second);
+        if (c != component.end() && c->second < 0) {
+          c->second = id;
+          stack.push_back(it->second);
+        }
+      }
+    }
+    std::sort(result[id].begin(), result[id].end());
+  }
+  return result;
+}
+
+// Triangles of `set` in Dijkstra order (centroid distances over shared edges) from `seed`.
+std::vector<int> dijkstra_order(const StripData& data, const std::vector<int>& set, int seed,
+                                std::vector<double>* distances = nullptr) {
+  const FlatStrip& strip = *data.strip;
+  std::unordered_map<int, double> distance;
+  for (int t : set) distance[t] = std::numeric_limits<double>::infinity();
+  auto centroid = [&](int t) {
+    const Triangle& tri = strip.triangles[t];
+    return Vec2((data.points[tri[0]] + data.points[tri[1]] + data.points[tri[2]]) / 3.0);
+  };
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+  distance[seed] = 0;
+  queue.push({0, seed});
+  std::vector<int> order;
+  std::unordered_map<int, char> done;
+  while (!queue.empty()) {
+    auto [d, t] = queue.top();
+    queue.pop();
+    if (done.count(t)) continue;
+    done[t] = 1;
+    order.push_back(t);
+    if (distances) distances->push_back(d);
+    const Triangle& tri = strip.triangles[t];
+    for (int i = 0; i < 3; ++i) {
+      auto it = data.owner.find(directed_edge_key(tri[(i + 1) % 3], tri[i]));
+      if (it == data.owner.end()) continue;
+      auto n = distance.find(it->second);
+      if (n == distance.end() || done.count(it->second)) continue;
+      const double nd = d + (centroid(t) - centroid(it->second)).norm();
+      if (nd < n->second) {
+        n->second = nd;
+        queue.push({nd, it->second});
+      }
+    }
+  }
+  return order;
+}
+
+std::string unique_label(const std::string& wanted, std::set<std::string>& used) {
+  std::string label = wanted;
+  while (used.count(label)) label += "'";
+  used.insert(label);
+  return label;
+}
+
+}  // namespace
+
+// Splits the strip into connected triangle sets each fitting width x height: a Dijkstra
+// prefix from one end of the set (a ruled strip is a path of triangles, so the cut is one
+// ruling), repeated on what is left. The prefix is not the largest that fits (that leaves
+// a sliver at the end) but the one nearest 1/k of the set's length, where k is the number
+// of pieces the greedy split needs, among those that leave a rest still splittable into
+// k - 1 pieces: the pieces come out of similar length.
+std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double height,
+                                           std::set<std::string>& used_labels) {
+  std::vector<std::vector<int>> done;
+  std::vector<std::vector<int>> work = components(data, data.triangles);
+  int next_label = 1;
+  // A piece must fit in its tightest orientation: one that fits only diagonally would take
+  // a page to itself.
+  auto fits = [&](const std::vector<int>& set) {
+    bool unused = false;
+    const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
+    return fits_area(box.size, width, height);
+  };
+  while (!work.empty()) {
+    std::vector<int> set = std::move(work.front());
+    work.erase(work.begin());
+    if (set.size() <= 1 || fits(set)) {
+      done.push_back(std::move(set));
+      continue;
+    }
+    std::vector<int> from_first = dijkstra_order(data, set, set.front());
+    std::vector<double> distance;
+    std::vector<int> order = dijkstra_order(data, set, from_first.back(), &distance);
+    // The longest prefix of order[begin..] that fits (at least one triangle).
+    auto longest_fitting = [&](std::size_t begin) {
+      std::size_t lo = begin + 1, hi = order.size();
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi + 1) / 2;
+        if (fits(std::vector<int>(order.begin() + begin, order.begin() + mid)))
+          lo = mid;
+        else
+          hi = mid - 1;
+      }
+      return lo;
+    };
+    auto greedy_count = [&](std::size_t begin) {
+      int count = 0;
+      for (; begin < order.size(); ++count) begin = longest_fitting(begin);
+      return count;
+    };
+    std::size_t lo = std::min(longest_fitting(0), order.size() - 1);
+    const int pieces = greedy_count(0);
+    if (pieces >= 2 && lo > 1) {
+      // Smallest cut whose rest still splits into pieces - 1 (the count only falls as the
+      // cut moves on), then the cut nearest 1/pieces of the length within [first, lo].
+      std::size_t first = 1, last = lo;
+      while (first < last) {
+        const std::size_t mid = (first + last) / 2;
+        if (greedy_count(mid) <= pieces - 1)
+          last = mid;
+        else
+          first = mid + 1;
+      }
+      const double target = distance.back() / pieces;
+      std::size_t cut =
+          std::lower_bound(distance.begin(), distance.end(), target) - distance.begin();
+      cut = std::clamp(cut, first, lo);
+      if (cut < lo && fits(std::vector<int>(order.begin(), order.begin() + cut)) &&
+          components(data, std::vector<int>(order.begin() + cut, order.end())).size() == 1)
+        lo = cut;
+    }
+    std::vector<int> head(order.begin(), order.begin() + lo);
+    std::sort(head.begin(), head.end());
+    std::vector<int> rest;
+    std::set_difference(set.begin(), set.end(), head.begin(), head.end(), std::back_inserter(rest));
+    std::unordered_map<int, char> in_head;
+    for (int t : head) in_head[t] = 1;
+    for (std::vector<int>& part : components(data, rest)) {
+      const std::string label = unique_label(
+          std::to_string(data.strip->id) + "-" + std::to_string(next_label++), used_labels);
+      for (int t : part) {
+        const Triangle& tri = data.strip->triangles[t];
+        for (int i = 0; i < 3; ++i) {
+          const int a = tri[i], b = tri[(i + 1) % 3];
+          auto it = data.owner.find(directed_edge_key(b, a));
+          if (it != data.owner.end() && in_head.count(it->second))
+            data.split_label[directed_edge_key(std::min(a, b), std::max(a, b))] = label;
+        }
+      }
+      work.push_back(std::move(part));
+    }
+    done.push_back(std::move(head));
+  }
+  return done;
+}
+
+}  // namespace papercraft::layout_internal

@@ -1,0 +1,350 @@
+// Glue tabs: flaps planned along seam chains, the side with room chosen, texture across the seam.
+#include "nodes/layout/tabs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <optional>
+#include <tuple>
+#include <utility>
+
+#include "core/edge_map.h"
+#include "nodes/layout/piece_shapes.h"
+#include "nodes/layout/polygon_2d.h"
+
+namespace papercraft::layout_internal {
+namespace {
+
+struct TabGeometry {
+  double width;
+  double angle;  // radians
+  double min_height;
+  double overlap_depth;
+};
+
+// The flap of height h along base[0..k] (strip on the left, the flap on the right): the
+// mitred offset band cut by the end lines at start_angle and end_angle to the base. Returns
+// its convex slices (one per base edge, counter-clockwise in the strip frame) and sets
+// `outer` to the flap's outer chain; empty if a slice would be degenerate or not convex.
+std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double h,
+                                           double start_angle, double end_angle,
+                                           std::vector<Vec2>* outer,
+                                           std::vector<int>* slice_edges) {
+  slice_edges->clear();
+  const std::size_t k = base.size() - 1;
+  std::vector<Vec2> d(k), n(k), offset(k + 1);
+  for (std::size_t i = 0; i < k; ++i) {
+    d[i] = (base[i + 1] - base[i]).normalized();
+    n[i] = right_normal(d[i]);
+  }
+  offset[0] = base[0] + h * n[0];
+  offset[k] = base[k] + h * n[k - 1];
+  for (std::size_t j = 1; j < k; ++j)
+    offset[j] = base[j] + h * (n[j - 1] + n[j]) / (1.0 + n[j - 1].dot(n[j]));
+  const Vec2 start_dir = std::cos(start_angle) * d[0] + std::sin(start_angle) * n[0];
+  const Vec2 end_dir = -std::cos(end_angle) * d[k - 1] + std::sin(end_angle) * n[k - 1];
+  auto after_start = [&](const Vec2& x) { return cross(start_dir, x - base[0]); };
+  auto before_end = [&](const Vec2& x) { return -cross(end_dir, x - base[k]); };
+
+  std::vector<std::vector<Vec2>> slices;
+  for (std::size_t j = 0; j < k; ++j) {
+    const std::vector<Vec2> quad{base[j + 1], base[j], offset[j], offset[j + 1]};
+    for (int i = 0; i < 4; ++i) {
+      const Vec2 e1 = quad[(i + 1) % 4] - quad[i], e2 = quad[(i + 2) % 4] - quad[(i + 1) % 4];
+      if (e1.norm() < 1e-9 || cross(e1, e2) <= 1e-9 * e1.norm() * e2.norm()) return {};
+    }
+    std::vector<Vec2> slice = clip(clip(quad, after_start), before_end);
+    if (slice.size() >= 3 && std::abs(signed_area(slice)) > 1e-12) {
+      slices.push_back(slice);
+      slice_edges->push_back(static_cast<int>(j));
+    }
+  }
+  std::vector<Vec2> band(base.rbegin(), base.rend());
+  band.insert(band.end(), offset.begin(), offset.end());
+  std::vector<Vec2> flap = clip(clip(band, after_start), before_end);
+  // The base must survive the cut whole; the rest is the outer chain.
+  if (flap.size() < k + 2) return {};
+  for (std::size_t j = 0; j <= k; ++j)
+    if ((flap[j] - base[k - j]).norm() > 1e-9) return {};
+  outer->assign(flap.begin() + static_cast<std::ptrdiff_t>(k + 1), flap.end());
+  return slices;
+}
+
+struct FlapPlan {
+  std::vector<int> edges;  // loop edge indices, in order
+  std::vector<Vec2> base;
+  std::vector<Vec2> outer;
+  std::vector<std::vector<Vec2>> slices;
+  std::vector<int> slice_edges;  // index into `edges` of each slice's base edge
+};
+
+// Flaps along a chain: one per nearly straight run of edges (a flap cannot fold along a
+// bend), each as high as fits up to the tab width, dropped where none fits.
+std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, const Chain& chain,
+                                 const TabGeometry& geometry, PieceShapes& shapes) {
+  const std::vector<PieceEdge>& loop = piece.loops[chain.loop];
+  const int n = static_cast<int>(loop.size());
+  std::vector<int> edges;
+  for (int i = 0; i < chain.count; ++i) edges.push_back((chain.start + i) % n);
+  auto point = [&](int v) { return data.points[v]; };
+  auto direction = [&](int e) { return Vec2(point(loop[e].v1) - point(loop[e].v0)); };
+  auto turn = [&](int e0, int e1) {  // signed turning angle from edge e0 to edge e1
+    const Vec2 a = direction(e0), b = direction(e1);
+    return std::atan2(cross(a, b), a.dot(b));
+  };
+  const double max_joint = 15 * kDegree, max_run = 30 * kDegree;
+  if (chain.closed) {  // start at the sharpest joint so runs break there
+    int best = 0;
+    double sharpest = -1;
+    for (int i = 0; i < chain.count; ++i) {
+      const double t = std::abs(turn(edges[(i + chain.count - 1) % chain.count], edges[i]));
+      if (t > sharpest) {
+        sharpest = t;
+        best = i;
+      }
+    }
+    std::rotate(edges.begin(), edges.begin() + best, edges.end());
+  }
+  // Runs: break at sharp joints, after too much accumulated turning, at zero-length edges.
+  std::vector<std::vector<int>> runs;
+  std::vector<double> joint_before, joint_after;  // turning angle at each run's ends
+  double accumulated = 0;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const bool degenerate = direction(edges[i]).norm() < 1e-9;
+    if (degenerate) {
+      accumulated = 0;
+      if (!runs.empty() && !runs.back().empty()) runs.emplace_back();
+      continue;
+    }
+    if (runs.empty() || runs.back().empty()) {
+      if (runs.empty()) runs.emplace_back();
+      runs.back().push_back(edges[i]);
+      accumulated = 0;
+      continue;
+    }
+    const double t = turn(runs.back().back(), edges[i]);
+    accumulated += std::abs(t);
+    if (std::abs(t) > max_joint || accumulated > max_run) {
+      runs.emplace_back();
+      accumulated = 0;
+    }
+    runs.back().push_back(edges[i]);
+  }
+  std::vector<FlapPlan> plans;
+  const int run_count = static_cast<int>(runs.size());
+  for (int r = 0; r < run_count; ++r) {
+    const std::vector<int>& run = runs[r];
+    if (run.empty()) continue;
+    // At a joint to a neighbouring run the flaps' ends must not cross: the tab side of
+    // the joint is 180 degrees less a right turn, shared by both flaps.
+    // Where the boundary turns right (into the tab's side) at an end of the flap, the flap
+    // keeps to its half of the corner: the tab side of the corner is 180 degrees less the
+    // turn, shared with the neighbouring flap or edge (a cone's apex leaves a narrow gap).
+    auto end_angle = [&](bool at_start) {
+      double angle = geometry.angle;
+      const bool chain_end =
+          at_start ? (r == 0 && !chain.closed) : (r == run_count - 1 && !chain.closed);
+      double t = 0;
+      if (chain_end) {
+        const int neighbour = at_start ? (run.front() + n - 1) % n : (run.back() + 1) % n;
+        if (direction(neighbour).norm() < 1e-9) return angle;
+        t = at_start ? turn(neighbour, run.front()) : turn(run.back(), neighbour);
+      } else {
+        const int neighbour_run = at_start ? (r + run_count - 1) % run_count : (r + 1) % run_count;
+        if (runs[neighbour_run].empty()) return angle;
+        t = at_start ? turn(runs[neighbour_run].back(), run.front())
+                     : turn(run.back(), runs[neighbour_run].front());
+      }
+      if (t < 0) angle = std::min(angle, 0.5 * (std::numbers::pi + t) - 0.5 * kDegree);
+      return angle;
+    };
+    const double start_angle = end_angle(true), stop_angle = end_angle(false);
+    if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) continue;
+    FlapPlan plan;
+    plan.edges = run;
+    plan.base.push_back(point(loop[run.front()].v0));
+    double length = 0;
+    for (int e : run) {
+      plan.base.push_back(point(loop[e].v1));
+      length += direction(e).norm();
+    }
+    const double chord = (plan.base.back() - plan.base.front()).norm();
+    const double h0 =
+        std::min(geometry.width, 0.9 * std::min(length, chord) /
+                                     (1 / std::tan(start_angle) + 1 / std::tan(stop_angle)));
+    for (double factor : {1.0, 0.7, 0.5, 0.35}) {
+      const double h = h0 * factor;
+      if (h < geometry.min_height) break;
+      std::vector<Vec2> outer;
+      std::vector<int> slice_edges;
+      auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer, &slice_edges);
+      if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
+      plan.outer = std::move(outer);
+      plan.slices = std::move(slices);
+      plan.slice_edges = std::move(slice_edges);
+      break;
+    }
+    if (plan.slices.empty()) continue;
+    for (const auto& slice : plan.slices) {
+      Box2 box;
+      for (const Vec2& c : slice) box.add(c);
+      shapes.slices.push_back(slice);
+      shapes.slice_boxes.push_back(box);
+    }
+    plans.push_back(std::move(plan));
+  }
+  return plans;
+}
+
+double plans_length(const std::vector<FlapPlan>& plans) {
+  double length = 0;
+  for (const FlapPlan& plan : plans)
+    for (std::size_t i = 0; i + 1 < plan.base.size(); ++i)
+      length += (plan.base[i + 1] - plan.base[i]).norm();
+  return length;
+}
+
+void commit_flaps(Piece& piece, const Chain& chain, const std::string& printed,
+                  std::vector<FlapPlan>& plans,
+                  const std::function<std::optional<TexturePatch>(int)>& edge_texture) {
+  PieceTab tab;
+  tab.label = printed;
+  const int tab_index = static_cast<int>(piece.tabs.size());
+  for (FlapPlan& plan : plans) {
+    const int flap_index = static_cast<int>(piece.flaps.size());
+    Flap flap{plan.base, plan.outer, tab_index, {}};
+    for (std::size_t k = 0; k < plan.slices.size(); ++k)
+      if (auto patch = edge_texture(plan.edges[plan.slice_edges[k]])) {
+        patch->clip = plan.slices[k];
+        flap.texture.push_back(std::move(*patch));
+      }
+    piece.flaps.push_back(std::move(flap));
+    tab.flaps.push_back(flap_index);
+    for (std::size_t i = 0; i < plan.edges.size(); ++i) {
+      PieceEdge& edge = piece.loops[chain.loop][plan.edges[i]];
+      edge.flap = flap_index;
+      edge.flap_first = (i == 0);
+    }
+  }
+  piece.tabs.push_back(std::move(tab));
+}
+
+using ChainKey = std::tuple<int, int, int, int>;
+
+ChainKey chain_key(const Chain& c, const std::vector<Piece>& pieces,
+                   const std::vector<StripData>& strips) {
+  const Piece& piece = pieces[c.piece];
+  return {strips[piece.strip].strip->id, piece.index, c.loop, c.start};
+}
+
+// The texture for a tab along loop edge `edge` of `piece`'s loop `loop`, the tab lying on
+// the edge's right. A tab is glued under the neighbouring piece, so it shows what continues
+// there: the partner triangle across the seam, unfolded onto the tab's side (its own uvs,
+// which also carries the texture across a uv seam of the atlas). Without a partner (or
+// partner uvs), the piece's own triangle at the edge, its affine map extended.
+std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
+                                        const std::vector<StripData>& strips,
+                                        const SeamEdges& seams, int piece_index, int loop,
+                                        int edge) {
+  const Piece& piece = pieces[piece_index];
+  const StripData& data = strips[piece.strip];
+  const PieceEdge& e = piece.loops[loop][edge];
+  const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+  auto third = [](const FlatStrip& strip, int t, int u, int v) {
+    for (int w : strip.triangles[t])
+      if (w != u && w != v) return w;
+    return -1;
+  };
+  const int id = seams.id[piece_index][loop][edge];
+  const int partner = id >= 0 ? seams.partner[id] : -1;
+  if (partner >= 0) {
+    const auto [p2, l2, i2] = seams.refs[partner];
+    const StripData& other = strips[pieces[p2].strip];
+    const PieceEdge& f = pieces[p2].loops[l2][i2];
+    const FlatStrip& strip2 = *other.strip;
+    auto owner = other.owner.find(directed_edge_key(f.v0, f.v1));
+    if (!strip2.uvs.empty() && owner != other.owner.end()) {
+      const int d = third(strip2, owner->second, f.v0, f.v1);
+      const Vec2 p0 = other.points[f.v0], p1 = other.points[f.v1], q = other.points[d];
+      const double length = (p1 - p0).norm(), own_length = (a - b).norm();
+      if (d >= 0 && length > 0 && own_length > 0) {
+        // f runs v0 -> v1 glued to this edge's v1 -> v0: the same frame along (b -> a).
+        const Vec2 along = (p1 - p0) / length, own_along = (a - b) / own_length;
+        const double s = (q - p0).dot(along), t = cross(along, q - p0);
+        const Vec2 unfolded = b + s * own_along + t * Vec2(-own_along.y(), own_along.x());
+        return TexturePatch{
+            {b, a, unfolded}, {strip2.uvs[f.v0], strip2.uvs[f.v1], strip2.uvs[d]}, {}};
+      }
+    }
+  }
+  const FlatStrip& strip = *data.strip;
+  if (strip.uvs.empty()) return std::nullopt;
+  auto owner = data.owner.find(directed_edge_key(e.v0, e.v1));
+  if (owner == data.owner.end()) return std::nullopt;
+  const int c = third(strip, owner->second, e.v0, e.v1);
+  if (c < 0) return std::nullopt;
+  return TexturePatch{{a, b, data.points[c]}, {strip.uvs[e.v0], strip.uvs[e.v1], strip.uvs[c]}, {}};
+}
+
+}  // namespace
+
+void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
+              const std::vector<Chain>& chains, const std::vector<SeamPair>& pairs,
+              const SeamEdges& seams, const LayoutOptions& options,
+              std::vector<std::string>& warnings) {
+  const TabGeometry geometry{options.tab_width_mm, options.tab_angle_degrees * kDegree,
+                             std::min(1.0, 0.2 * options.tab_width_mm), 1e-6};
+  std::vector<std::optional<PieceShapes>> shapes(pieces.size());
+  auto shapes_of = [&](int piece) -> PieceShapes& {
+    if (!shapes[piece]) shapes[piece] = piece_shapes(strips[pieces[piece].strip], pieces[piece]);
+    return *shapes[piece];
+  };
+  for (const SeamPair& pair : pairs) {
+    std::vector<int> sides{pair.first};
+    if (pair.second >= 0) {
+      sides.push_back(pair.second);
+      if (chain_key(chains[pair.second], pieces, strips) <
+          chain_key(chains[pair.first], pieces, strips))
+        std::swap(sides[0], sides[1]);
+    }
+    int best_side = -1;
+    std::vector<FlapPlan> best_plans;
+    double best_length = 0;
+    for (int side : sides) {
+      const Chain& chain = chains[side];
+      const Piece& piece = pieces[chain.piece];
+      const StripData& data = strips[piece.strip];
+      PieceShapes& piece_shapes_ = shapes_of(chain.piece);
+      const std::size_t slices_before = piece_shapes_.slices.size();
+      std::vector<FlapPlan> plans = plan_flaps(data, piece, chain, geometry, piece_shapes_);
+      piece_shapes_.slices.resize(slices_before);
+      piece_shapes_.slice_boxes.resize(slices_before);
+      const double length = plans_length(plans);
+      if (length > best_length + 1e-9) {
+        best_side = side;
+        best_plans = std::move(plans);
+        best_length = length;
+      }
+      if (best_length >= 0.5 * chain_length(data, piece, chain)) break;
+    }
+    if (best_side < 0) {
+      warnings.push_back("seam " + pair.printed + " has no room for a glue tab on either side");
+      continue;
+    }
+    const Chain& chain = chains[best_side];
+    PieceShapes& piece_shapes_ = shapes_of(chain.piece);
+    for (const FlapPlan& plan : best_plans)
+      for (const auto& slice : plan.slices) {
+        Box2 box;
+        for (const Vec2& c : slice) box.add(c);
+        piece_shapes_.slices.push_back(slice);
+        piece_shapes_.slice_boxes.push_back(box);
+      }
+    commit_flaps(pieces[chain.piece], chain, pair.printed, best_plans, [&](int edge) {
+      return tab_texture(pieces, strips, seams, chain.piece, chain.loop, edge);
+    });
+  }
+}
+
+}  // namespace papercraft::layout_internal
