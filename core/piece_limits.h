@@ -14,7 +14,7 @@ struct PieceLimits {
   double min_area = 0.0;   // 0: no bound
   /// Share of a piece's area allowed to be narrower than min_width: its tips (the apex of a
   /// cone, the corners where cuts meet) and nothing more.
-  double max_narrow_share = 0.2;
+  double max_narrow_share = 0.5;
 
   bool active() const { return min_width > 0.0 || min_area > 0.0; }
 };

@@ -83,7 +83,11 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   // Slivers are refused first; on a small part where nothing else splits, any split is
   // still progress. With limits, a cut that makes progress but leaves a piece too narrow or
   // too small is remembered, and the nearest iso-values of its field are tried first.
-  WitnessCut fallback;
+  // When no cut meets them, the paper's cut (the first that makes progress) stands, unless
+  // another falls far less short: a part thinner than the bound everywhere (a thin tube)
+  // gains nothing from a worse cut, which would only cost strips.
+  WitnessCut paper_cut, fallback;
+  double paper_shortfall = std::numeric_limits<double>::infinity();
   double fallback_shortfall = std::numeric_limits<double>::infinity();
   auto shortfall_of = [&](const std::vector<Mesh>& pieces) {
     double worst = 0.0;
@@ -105,6 +109,10 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
       if (!options.limits.active()) return {std::move(pieces), value, attempt.across};
       double shortfall = shortfall_of(pieces);
       if (shortfall == 0.0) return {std::move(pieces), value, attempt.across};
+      if (paper_cut.pieces.empty()) {
+        paper_cut = {pieces, value, attempt.across};
+        paper_shortfall = shortfall;
+      }
       if (shortfall < fallback_shortfall) {
         fallback_shortfall = shortfall;
         fallback = {std::move(pieces), value, attempt.across};
@@ -126,7 +134,8 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
         }
       }
     }
-    if (!fallback.pieces.empty()) return fallback;
+    if (!fallback.pieces.empty())
+      return fallback_shortfall <= options.limit_gain * paper_shortfall ? fallback : paper_cut;
   }
   return {};
 }

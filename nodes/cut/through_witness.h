@@ -25,10 +25,14 @@ struct WitnessCutOptions {
   double min_piece_fraction = 0.01;
   /// Pieces a person can cut and glue. A cut that would leave a narrower or smaller piece
   /// is moved to the nearest iso-value (of the same field, then of the other) whose pieces
-  /// all meet the limits; when none does, the cut whose worst piece falls least short of them.
+  /// all meet the limits; when none does, the cut whose worst piece falls least short of them
+  /// if that is far better than the paper's cut (limit_gain), else the paper's cut.
   PieceLimits limits;
   /// Spacing of the iso-values tried next to a cut that breaks the limits.
   double limit_step = 0.05;
+  /// When no cut meets the limits, another cut replaces the paper's only if its worst piece
+  /// falls short of them by at most this share of the paper's cut's shortfall.
+  double limit_gain = 0.5;
 };
 
 struct WitnessCut {
