@@ -79,7 +79,15 @@ struct PageTransform {
 
 /// One piece of paper on a page: a whole flat strip or, where the strip was split to fit
 /// a page, a part of it.
+/// A seam on a placed piece: its printed label and the piece it is glued to.
+struct PieceSeam {
+  std::string label;    // as printed on both sides
+  std::string partner;  // name of the piece across ("" when it has none)
+  bool tab = false;     // this piece carries the seam's glue tab
+};
+
 struct PlacedPiece {
+  std::string name;  // printed number: 1..N with no gaps; "12a", "12b" for a split strip
   int strip_id = -1;
   int piece_index = 0;  // 0..piece_count-1 along the strip
   int piece_count = 1;
@@ -101,7 +109,8 @@ struct PlacedPiece {
   /// Alignment marks: a short tick across the cut line at each end of a seam chain where it
   /// meets another seam, printed on both pieces so that long seams are glued in register.
   std::vector<std::array<Vec2, 2>> marks;
-  Label number;               // "12", or "12.3" for the third piece of split strip 12
+  Label number;  // the name, as printed
+  std::vector<PieceSeam> seams;
 };
 
 /// A bar of a round length with ticks, and its caption, in page mm.

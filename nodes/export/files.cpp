@@ -1,6 +1,7 @@
 #include "nodes/export/files.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -96,6 +97,44 @@ std::string strips_json(const std::vector<FlatStrip>& strips) {
                              {"self", chain.sides[0].strip == chain.sides[1].strip},
                              {"sides", std::move(sides)}});
   }
+  return root.dump(1) + "\n";
+}
+
+std::string pieces_json(const PatternLayout& layout) {
+  nlohmann::json pieces = nlohmann::json::array();
+  for (std::size_t page = 0; page < layout.pages.size(); ++page) {
+    for (const PlacedPiece& piece : layout.pages[page].pieces) {
+      const auto& t = piece.transform;
+      nlohmann::json seams = nlohmann::json::array();
+      for (const PieceSeam& seam : piece.seams)
+        seams.push_back({{"label", seam.label}, {"partner", seam.partner}, {"tab", seam.tab}});
+      pieces.push_back(
+          {{"name", piece.name},
+           {"strip", piece.strip_id},
+           {"piece_index", piece.piece_index},
+           {"piece_count", piece.piece_count},
+           {"page", page + 1},
+           {"transform",
+            {{"linear", {t.linear(0, 0), t.linear(0, 1), t.linear(1, 0), t.linear(1, 1)}},
+             {"translation", {t.translation.x(), t.translation.y()}},
+             {"rotation_degrees", t.rotation_degrees}}},
+           {"seams", std::move(seams)}});
+    }
+  }
+  // In number order (1, 2, ..., 12a, 12b, ...), whatever page each lies on.
+  auto key = [](const nlohmann::json& piece) {
+    const std::string name = piece.at("name").get<std::string>();
+    std::size_t digits = 0;
+    while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[digits]))) ++digits;
+    return std::make_pair(digits ? std::stol(name.substr(0, digits)) : 0L, name.substr(digits));
+  };
+  std::stable_sort(pieces.begin(), pieces.end(),
+                   [&](const auto& a, const auto& b) { return key(a) < key(b); });
+  nlohmann::json root = {
+      {"mm_per_unit", layout.mm_per_unit},
+      {"page", {{"width_mm", layout.page.width_mm}, {"height_mm", layout.page.height_mm}}},
+      {"pages", layout.pages.size()},
+      {"pieces", std::move(pieces)}};
   return root.dump(1) + "\n";
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/mesh.h"
+#include "core/pattern.h"
 #include "core/strip.h"
 
 namespace papercraft {
@@ -17,6 +18,12 @@ std::string approximation_obj(const std::vector<const RuledStrip*>& strips);
 /// strips.json: every flat strip with id, source_strip, vertices3d, vertices2d, triangles,
 /// uv (when present) and boundary edges with kind cut | seam | open, neighbour and label.
 std::string strips_json(const std::vector<FlatStrip>& strips);
+
+/// pieces.json: every printed piece, in number order: its name, strip id, piece index and
+/// count (a strip split for the page), page (1-based), page transform (strip vertices2d in
+/// model units -> page mm: `linear` row-major 2x2, `translation`, `rotation_degrees`), and
+/// its seams (printed label, the piece across, whether this side carries the tab).
+std::string pieces_json(const PatternLayout& layout);
 
 /// Unsigned distance of every vertex of `mesh` to the surface `to` (BVH, exact).
 std::vector<double> vertex_distances(const Mesh& mesh, const TriangleMesh& to);

@@ -94,15 +94,14 @@ void register_export_files(Registry& registry) {
   using O = ExportOptions;
   static const auto table =
       ParamTable<O>()
-          .add("formats", [](O& o) -> auto& { return o.formats; },
-               "which files to write besides report.json", {},
-               {"pdf", "svg", "obj", "json", "ply"})
-          .choice("preset", [](O& o) -> auto& { return o.style.preset; },
-                  std::vector<std::pair<std::string, StylePreset>>{
-                      {"print", StylePreset::Print},
-                      {"laser", StylePreset::Laser},
-                      {"cutter", StylePreset::Cutter}},
-                  "colours and line styles: print, laser (cut red, score blue) or cutter");
+          .add("formats", [](O & o) -> auto& { return o.formats; },
+               "which files to write besides report.json", {}, {"pdf", "svg", "obj", "json", "ply"})
+          .choice(
+              "preset", [](O & o) -> auto& { return o.style.preset; },
+              std::vector<std::pair<std::string, StylePreset>>{{"print", StylePreset::Print},
+                                                               {"laser", StylePreset::Laser},
+                                                               {"cutter", StylePreset::Cutter}},
+              "colours and line styles: print, laser (cut red, score blue) or cutter");
   registry.add(
       {.name = "export.files",
        .summary = "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
@@ -153,6 +152,8 @@ void register_export_files(Registry& registry) {
                             " not drawn: only PNG textures are supported");
                }
              }
+             if (wants(formats, "json"))
+               write_file_atomic(dir / "pieces.json", pieces_json(layout));
              if (wants(formats, "svg")) {
                for (std::size_t page = 0; page < layout.pages.size(); ++page) {
                  const std::string number = std::to_string(page + 1);

@@ -137,9 +137,7 @@ PieceLabel piece_number(const StripData& data, const Piece& piece, const Oriente
                         const LayoutOptions& options) {
   auto [centre, radius] = number_spot(data, piece);
   PieceLabel number;
-  number.text = std::to_string(data.strip->id);
-  // Appended in two steps: GCC 12 warns (-Wrestrict, a false positive) on "." + to_string here.
-  if (piece.count > 1) number.text.append(".").append(std::to_string(piece.index + 1));
+  number.text = piece.name;
   number.position = centre;
   number.size = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
   number.direction = Vec2(std::cos(box.angle), std::sin(box.angle));

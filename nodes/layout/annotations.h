@@ -27,7 +27,7 @@ PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& c
 std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
                                   double threshold_degrees, double strong_degrees);
 
-/// The piece number (<strip id>, or <strip id>.<k> for a split strip) at the incentre of a
+/// The piece number (Piece::name: 1..N, "12a", "12b" for a split strip) at the incentre of a
 /// triangle with (nearly) the largest inscribed circle, the one nearest the piece's centroid,
 /// sized to fit that circle and running along the box's long side.
 PieceLabel piece_number(const StripData& data, const Piece& piece, const OrientedBox& box,

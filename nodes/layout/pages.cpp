@@ -44,6 +44,7 @@ using layout_internal::pair_chains;
 using layout_internal::Piece;
 using layout_internal::piece_folds;
 using layout_internal::piece_loops;
+using layout_internal::piece_name;
 using layout_internal::piece_number;
 using layout_internal::piece_points;
 using layout_internal::PieceEdge;
@@ -250,6 +251,8 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
   auto direction_degrees = [&](const Vec2& d) { return upright_degrees(linear * d); };
 
   PlacedPiece placed;
+  placed.name = piece.name;
+  placed.seams = piece.seams;
   placed.strip_id = strip.id;
   placed.piece_index = piece.index;
   placed.piece_count = piece.count;
@@ -378,12 +381,14 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
       if (e.kind == EdgeKind::Seam) used_labels.insert(e.label);
 
   std::vector<Piece> pieces;
+  int number = 0;  // pieces are numbered 1..N in strip order, with no gaps
   for (int s = 0; s < static_cast<int>(p.strips.size()); ++s) {
     StripData& data = p.strips[s];
     if (data.triangles.empty()) {
       warnings.push_back(strip_name(*data.strip) + " has no triangles; skipped");
       continue;
     }
+    ++number;
     std::vector<std::vector<int>> sets;
     if (strip_fits(data, p)) {
       sets.push_back(data.triangles);
@@ -405,6 +410,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
       piece.strip = s;
       piece.index = k;
       piece.count = static_cast<int>(sets.size());
+      piece.name = piece_name(number, k, piece.count);
       piece.triangles = std::move(sets[k]);
       piece.loops = piece_loops(data, piece.triangles, warnings);
       pieces.push_back(std::move(piece));
@@ -429,6 +435,17 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     }
   }
   if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);
+  for (const SeamPair& pair : pairs) {
+    const int a = chains[pair.first].piece;
+    const int b = pair.second >= 0 ? chains[pair.second].piece : -1;
+    auto has_tab = [&](int piece) {
+      for (const PieceTab& tab : pieces[piece].tabs)
+        if (tab.label == pair.printed && !tab.flaps.empty()) return true;
+      return false;
+    };
+    pieces[a].seams.push_back({pair.printed, b >= 0 ? pieces[b].name : "", has_tab(a)});
+    if (b >= 0) pieces[b].seams.push_back({pair.printed, pieces[a].name, has_tab(b)});
+  }
 
   std::vector<Orientation> orientations;
   std::vector<int> packed, oversized;
@@ -443,9 +460,8 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     } else {
       oversized.push_back(i);
       if (!o.fits)
-        warnings.push_back("piece " + std::to_string(p.strips[pieces[i].strip].strip->id) +
-                           (pieces[i].count > 1 ? "." + std::to_string(pieces[i].index + 1) : "") +
-                           " (" + format_mm(o.box.size.x()) + " x " + format_mm(o.box.size.y()) +
+        warnings.push_back("piece " + pieces[i].name + " (" + format_mm(o.box.size.x()) + " x " +
+                           format_mm(o.box.size.y()) +
                            " mm with tabs) does not fit the printable area (" +
                            format_mm(p.area.x()) + " x " + format_mm(p.area.y()) +
                            " mm) and overflows its page: lower height_mm or use a larger page");

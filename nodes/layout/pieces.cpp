@@ -12,6 +12,14 @@
 
 namespace papercraft::layout_internal {
 
+std::string piece_name(int number, int index, int count) {
+  std::string name = std::to_string(number);
+  if (count <= 1) return name;
+  std::string letters;
+  for (int k = index; k >= 0; k = k / 26 - 1) letters.insert(letters.begin(), char('a' + k % 26));
+  return name.append(letters);
+}
+
 std::string strip_name(const FlatStrip& strip) {
   return "strip " + std::to_string(strip.id);
 }

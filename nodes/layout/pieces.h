@@ -63,6 +63,7 @@ struct Piece {
   int strip = -1;  // index into strips
   int index = 0;
   int count = 1;
+  std::string name;  // as printed: "12", or "12a", "12b" for the pieces of a split strip
   std::vector<int> triangles;
   std::vector<std::vector<PieceEdge>> loops;
   std::vector<Flap> flaps;
@@ -70,7 +71,12 @@ struct Piece {
   std::vector<PieceLabel> labels;
   std::optional<PieceLabel> number;        // set by arrange_labels
   std::vector<std::array<Vec2, 2>> marks;  // strip frame mm (see PlacedPiece::marks)
+  std::vector<PieceSeam> seams;
 };
+
+/// The printed name of piece `index` of `count` of the strip numbered `number` (1-based):
+/// "12", or "12a", "12b", ... (then "12aa", ...) when the strip was split.
+std::string piece_name(int number, int index, int count);
 
 /// "strip <id>", as messages name a strip.
 std::string strip_name(const FlatStrip& strip);
