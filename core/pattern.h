@@ -128,6 +128,15 @@ struct Page {
   Label footer;  // "page 2 / 5"
 };
 
+/// How usable the pages are, measured on the placed pieces.
+struct LayoutStats {
+  std::vector<double> page_fill;  // per page: pieces and tabs / printable area (0..1)
+  int seams = 0;                  // printed seam labels (each counted once)
+  int seams_without_tab = 0;      // ... of which neither side carries a tab
+  double smallest_text_mm = 0.0;  // the smallest label or number
+  int overlapping_text = 0;       // pairs of labels/numbers whose boxes intersect
+};
+
 struct PatternLayout {
   PageSize page;
   double margin_mm = 10.0;
@@ -138,6 +147,7 @@ struct PatternLayout {
   /// Strips that did not fit a page and were split, pieces that still do not fit
   /// (they overflow their page), seams without a partner or without room for a tab.
   std::vector<std::string> warnings;
+  LayoutStats stats;
 };
 
 }  // namespace papercraft

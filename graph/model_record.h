@@ -45,6 +45,11 @@ struct ModelRecord {
   /// layout: the pages.
   int pages = 0;
   int shelf_pages = 0;
+  std::vector<double> page_fill;  // per page: pieces and tabs over the printable area
+  int seams = 0;
+  int seams_without_tab = 0;
+  double smallest_text_mm = 0.0;
+  int overlapping_text = 0;
 
   /// export: the largest distance of an input vertex to the approximation (error.ply).
   double max_vertex_distance = 0.0;

@@ -76,6 +76,18 @@ nlohmann::json model_report(const ModelRun& model) {
       {"segments", record.segments},
       {"cuts", record.cuts},
       {"mm_per_unit", record.mm_per_unit}};
+  double fill_but_last = 0.0;
+  for (std::size_t i = 0; i + 1 < record.page_fill.size(); ++i)
+    fill_but_last += record.page_fill[i];
+  if (record.page_fill.size() > 1)
+    fill_but_last /= static_cast<double>(record.page_fill.size() - 1);
+  report["layout"] = {{"pages", record.pages},
+                      {"page_fill", record.page_fill},
+                      {"mean_fill_but_last", fill_but_last},
+                      {"seams", record.seams},
+                      {"seams_without_tab", record.seams_without_tab},
+                      {"smallest_text_mm", record.smallest_text_mm},
+                      {"overlapping_text", record.overlapping_text}};
   nlohmann::json nodes = nlohmann::json::object();
   for (std::size_t i = 0; i < model.node_labels.size(); ++i) {
     nodes[model.node_labels[i].first] = {

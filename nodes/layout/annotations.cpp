@@ -67,7 +67,7 @@ PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& c
   const auto& loop = piece.loops[chain.loop];
   const double total = chain_length(data, piece, chain);
   const double text_width = 0.6 * static_cast<double>(text.size());
-  size = std::max(std::min(size, (total - 0.5) / std::max(text_width, 1e-9)), std::min(size, 1.5));
+  size = std::max(std::min(size, (total - 0.5) / std::max(text_width, 1e-9)), std::min(size, 2.0));
   // The edge at the chain's middle (a closed chain has none: its longest edge), with the
   // text kept clear of the edge's corners where the edge is long enough.
   int chosen = 0;
@@ -139,23 +139,99 @@ PieceLabel piece_number(const StripData& data, const Piece& piece, const Oriente
   PieceLabel number;
   number.text = piece.name;
   number.position = centre;
-  number.size = std::min(options.number_size_mm, std::max(1.5, 1.8 * radius));
+  number.size =
+      std::min(options.number_size_mm,
+               std::max(std::min(options.min_text_mm, options.number_size_mm), 1.8 * radius));
   number.direction = Vec2(std::cos(box.angle), std::sin(box.angle));
   return number;
 }
 
+namespace {
+
+// The boundary segments of a piece and its flaps' outer chains (mm, strip frame): no text
+// may cross them.
+std::vector<std::array<Vec2, 2>> cut_lines(const StripData& data, const Piece& piece) {
+  std::vector<std::array<Vec2, 2>> lines;
+  for (const auto& loop : piece.loops)
+    for (const PieceEdge& e : loop) lines.push_back({data.points[e.v0], data.points[e.v1]});
+  for (const Flap& flap : piece.flaps) {
+    if (flap.base.empty() || flap.outer.empty()) continue;
+    lines.push_back({flap.base.front(), flap.outer.front()});
+    for (std::size_t i = 0; i + 1 < flap.outer.size(); ++i)
+      lines.push_back({flap.outer[i], flap.outer[i + 1]});
+    lines.push_back({flap.outer.back(), flap.base.back()});
+  }
+  return lines;
+}
+
+bool point_in_polygon(const Vec2& p, const std::vector<Vec2>& polygon) {
+  bool inside = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 &a = polygon[i], &b = polygon[j];
+    if ((a.y() > p.y()) != (b.y() > p.y()) &&
+        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
+      inside = !inside;
+  }
+  return inside;
+}
+
+}  // namespace
+
 void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
-                    const OrientedBox& box, const LayoutOptions& options) {
+                    const OrientedBox& box, const LayoutOptions& options,
+                    std::vector<std::string>& warnings) {
   const PieceShapes shapes = piece_shapes(data, piece);
-  piece.number = piece_number(data, piece, box, options);
+  const std::vector<std::array<Vec2, 2>> lines = cut_lines(data, piece);
+  const double smallest = options.min_text_mm;
   std::vector<std::array<Vec2, 4>> taken;
-  taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
-                           piece.number->text.size()));
   auto clear = [&](const std::array<Vec2, 4>& candidate) {
     for (const auto& other : taken)
       if (convex_overlap(candidate.data(), 4, other.data(), 4, 0.0)) return false;
+    for (const auto& line : lines)
+      if (segment_crosses(line[0], line[1], candidate)) return false;
     return true;
   };
+  auto fits = [&](const std::array<Vec2, 4>& candidate) {
+    return box_on_piece(candidate, shapes) && clear(candidate);
+  };
+  // The number first: at the best spot, shrunk (not below the smallest text) until it lies
+  // clear on the piece; else at the incentres of the other roomiest triangles.
+  piece.number = piece_number(data, piece, box, options);
+  std::vector<std::pair<double, Vec2>> spots;  // inscribed radius, incentre
+  for (int t : piece.triangles) {
+    const Triangle& tri = data.strip->triangles[t];
+    const Vec2 &a = data.points[tri[0]], &b = data.points[tri[1]], &c = data.points[tri[2]];
+    const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+    const double perimeter = la + lb + lc;
+    if (perimeter <= 0) continue;
+    spots.push_back(
+        {std::abs(cross(b - a, c - a)) / perimeter, (la * a + lb * b + lc * c) / perimeter});
+  }
+  std::stable_sort(spots.begin(), spots.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  if (spots.size() > 40) spots.resize(40);
+  spots.insert(spots.begin(), {0.0, piece.number->position});
+  bool number_placed = false;
+  for (double size = piece.number->size; !number_placed; size -= 0.25) {
+    size = std::max(size, smallest);
+    for (const auto& [radius, centre] : spots) {
+      const auto candidate =
+          text_box(centre, piece.number->direction, size, piece.number->text.size());
+      if (!fits(candidate)) continue;
+      piece.number->position = centre;
+      piece.number->size = size;
+      taken.push_back(candidate);
+      number_placed = true;
+      break;
+    }
+    if (size <= smallest) break;
+  }
+  if (!number_placed) {
+    piece.number->size = std::max(piece.number->size, smallest);
+    taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                             piece.number->text.size()));
+    warnings.push_back("piece " + piece.name + ": no room for its number clear of the cut line");
+  }
   for (PieceLabel& label : piece.labels) {
     if (label.chain < 0) continue;
     const Chain& chain = chains[label.chain];
@@ -177,22 +253,66 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       *direction = Vec2::UnitX();
       return label.position;
     };
-    bool placed = false;
     const auto first_box = text_box(label.position, label.direction, label.size, label.text.size());
-    if (box_on_piece(first_box, shapes) && clear(first_box)) {
+    if (label.size >= smallest && fits(first_box)) {
       taken.push_back(first_box);
       continue;
     }
-    for (double size : {label.size, 0.8 * label.size, 0.65 * label.size, 0.5 * label.size}) {
-      if (size < std::min(1.2, label.size) - 1e-12) break;
-      for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.05, 0.95}) {
-        for (double gap : {0.6, 0.3, 1.2}) {
-          Vec2 direction;
-          const Vec2 on_edge = point_at(fraction * total, &direction);
-          const Vec2 centre =
-              on_edge + Vec2(-direction.y(), direction.x()) * (kHalfLineEm * size + gap);
+    bool placed = false;
+    // Along the seam, then smaller, down to the smallest text.
+    std::vector<double> sizes{std::max(label.size, smallest)};
+    for (double size : {0.85 * label.size, 0.7 * label.size, smallest})
+      if (size < sizes.back() && size >= smallest) sizes.push_back(size);
+    // Along the edge at each spot, or along the chain's chord (a curved seam), nearest the
+    // seam first, then farther in.
+    const PieceEdge& head = loop[chain.start % loop.size()];
+    const PieceEdge& tail = loop[(chain.start + chain.count - 1) % loop.size()];
+    const Vec2 chord = data.points[tail.v1] - data.points[head.v0];
+    for (double size : sizes) {
+      for (double gap : {0.6, 0.3, 1.2, 2.0, 3.0, 4.5}) {
+        for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.05, 0.95}) {
+          Vec2 along;
+          const Vec2 on_edge = point_at(fraction * total, &along);
+          for (const Vec2& direction :
+               {along, chord.norm() > 1e-9 ? Vec2(chord.normalized()) : along}) {
+            const Vec2 inward(-along.y(), along.x());
+            const Vec2 centre = on_edge + inward * (kHalfLineEm * size + gap);
+            const auto candidate = text_box(centre, direction, size, label.text.size());
+            if (!fits(candidate)) continue;
+            label.position = centre;
+            label.direction = direction;
+            label.size = size;
+            taken.push_back(candidate);
+            placed = true;
+            break;
+          }
+          if (placed) break;
+        }
+        if (placed) break;
+      }
+      if (placed) break;
+    }
+    // On the seam's own tab, when this side carries it: the tab is glued under the other
+    // piece, but the label is read while gluing.
+    for (const PieceTab& tab : piece.tabs) {
+      if (placed || tab.label != label.text) continue;
+      for (int f : tab.flaps) {
+        const Flap& flap = piece.flaps[f];
+        if (placed || flap.base.size() < 2 || flap.outer.empty()) continue;
+        std::vector<Vec2> polygon(flap.base.rbegin(), flap.base.rend());
+        polygon.insert(polygon.end(), flap.outer.begin(), flap.outer.end());
+        const Vec2 direction = (flap.base.front() - flap.base.back()).normalized();
+        Vec2 centre = Vec2::Zero();
+        for (const Vec2& q : polygon) centre += q;
+        centre /= static_cast<double>(polygon.size());
+        for (double size : sizes) {
           const auto candidate = text_box(centre, direction, size, label.text.size());
-          if (!box_on_piece(candidate, shapes) || !clear(candidate)) continue;
+          bool inside = true;
+          for (const Vec2& corner : candidate) inside = inside && point_in_polygon(corner, polygon);
+          bool free = true;
+          for (const auto& other : taken)
+            free = free && !convex_overlap(candidate.data(), 4, other.data(), 4, 0.0);
+          if (!inside || !free) continue;
           label.position = centre;
           label.direction = direction;
           label.size = size;
@@ -200,12 +320,47 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
           placed = true;
           break;
         }
-        if (placed) break;
       }
-      if (placed) break;
     }
-    if (!placed) taken.push_back(first_box);
+    if (!placed) {
+      label.size = std::max(label.size, smallest);
+      taken.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
+      warnings.push_back("piece " + piece.name + ": label " + label.text +
+                         " finds no spot clear of other text and lines");
+    }
   }
+}
+
+std::vector<std::array<Vec2, 4>> text_boxes(const Piece& piece) {
+  std::vector<std::array<Vec2, 4>> boxes;
+  if (piece.number)
+    boxes.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                             piece.number->text.size()));
+  for (const PieceLabel& label : piece.labels)
+    boxes.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
+  return boxes;
+}
+
+std::vector<FoldLine> clear_of_text(const std::vector<FoldLine>& folds,
+                                    const std::vector<std::array<Vec2, 4>>& boxes) {
+  std::vector<FoldLine> out;
+  for (const FoldLine& fold : folds) {
+    std::vector<std::array<Vec2, 2>> parts{{fold.a, fold.b}};
+    for (const auto& box : boxes) {
+      std::vector<std::array<Vec2, 2>> next;
+      for (const auto& part : parts)
+        for (const auto& piece : segment_outside(part[0], part[1], box)) next.push_back(piece);
+      parts = std::move(next);
+    }
+    for (const auto& part : parts) {
+      if ((part[1] - part[0]).norm() < 1e-6) continue;
+      FoldLine shortened = fold;
+      shortened.a = part[0];
+      shortened.b = part[1];
+      out.push_back(shortened);
+    }
+  }
+  return out;
 }
 
 }  // namespace papercraft::layout_internal

@@ -33,10 +33,20 @@ std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
 PieceLabel piece_number(const StripData& data, const Piece& piece, const OrientedBox& box,
                         const LayoutOptions& options);
 
-/// Sets the piece number and moves each seam label along its chain (and shrinks it, down to
-/// 1.2 mm) until its text box lies on the piece and clear of the piece number and the labels
-/// placed before it; a label that finds no such spot keeps its first one.
+/// Sets the piece number (shrunk, not below min_text_mm, until it lies clear) and moves each
+/// seam label along its chain (and shrinks it, down to min_text_mm) until its text box lies
+/// on the piece, crosses no cut line (of the piece or its tabs) and is clear of the number
+/// and the labels placed before it; else onto the seam's tab on this piece; a label that
+/// finds no such spot keeps its first one and is named in `warnings`.
 void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
-                    const OrientedBox& box, const LayoutOptions& options);
+                    const OrientedBox& box, const LayoutOptions& options,
+                    std::vector<std::string>& warnings);
+
+/// The boxes of the piece's number and seam labels (strip frame mm).
+std::vector<std::array<Vec2, 4>> text_boxes(const Piece& piece);
+
+/// The fold lines with the parts inside any of `boxes` cut out: no line crosses a label.
+std::vector<FoldLine> clear_of_text(const std::vector<FoldLine>& folds,
+                                    const std::vector<std::array<Vec2, 4>>& boxes);
 
 }  // namespace papercraft::layout_internal

@@ -31,7 +31,10 @@ using layout_internal::add_tabs;
 using layout_internal::arrange_labels;
 using layout_internal::Chain;
 using layout_internal::chain_label;
+using layout_internal::clear_of_text;
 using layout_internal::convex_hull;
+using layout_internal::convex_overlap;
+using layout_internal::cross;
 using layout_internal::Flap;
 using layout_internal::format_mm;
 using layout_internal::hull_fits;
@@ -54,9 +57,11 @@ using layout_internal::prepare_strip;
 using layout_internal::seam_chains;
 using layout_internal::SeamEdges;
 using layout_internal::SeamPair;
+using layout_internal::signed_area;
 using layout_internal::split_to_fit;
 using layout_internal::strip_name;
 using layout_internal::StripData;
+using layout_internal::text_boxes;
 using layout_internal::tightest_box;
 using layout_internal::validate_strip;
 
@@ -290,8 +295,10 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
     placed.outline.push_back(std::move(outline));
     placed.cut_outline.push_back(std::move(cut));
   }
-  for (FoldLine fold :
-       piece_folds(data, piece, options.fold_angle_degrees, options.strong_fold_angle_degrees)) {
+  const auto boxes = text_boxes(piece);
+  for (FoldLine fold : clear_of_text(
+           piece_folds(data, piece, options.fold_angle_degrees, options.strong_fold_angle_degrees),
+           boxes)) {
     fold.a = to_page(fold.a);
     fold.b = to_page(fold.b);
     placed.folds.push_back(fold);
@@ -316,7 +323,9 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
     }
     placed.tabs.push_back(std::move(tab));
   }
-  for (const auto& mark : piece.marks) placed.marks.push_back({to_page(mark[0]), to_page(mark[1])});
+  for (const auto& mark : piece.marks)
+    for (const auto& part : clear_of_text({FoldLine{mark[0], mark[1]}}, boxes))
+      placed.marks.push_back({to_page(part.a), to_page(part.b)});
   for (const PieceLabel& label : piece.labels)
     placed.labels.push_back(
         {label.text, to_page(label.position), direction_degrees(label.direction), label.size});
@@ -354,6 +363,46 @@ void add_page_furniture(Page& page, int index, int count, const LayoutOptions& o
   const double caption_width = 0.6 * text * static_cast<double>(bar.caption.text.size());
   bar.caption.position = Vec2(options.margin_mm + bar.length_mm + 3 + 0.5 * caption_width,
                               bottom - 0.5 * options.footer_mm);
+}
+
+LayoutStats layout_stats(const PatternLayout& layout, const Vec2& area) {
+  LayoutStats stats;
+  std::map<std::string, bool> tabbed;
+  std::vector<Label> texts;
+  for (const Page& page : layout.pages) {
+    double covered = 0;
+    for (const PlacedPiece& piece : page.pieces) {
+      for (const Triangle& t : piece.triangles)
+        covered += 0.5 * std::abs(cross(piece.vertices[t[1]] - piece.vertices[t[0]],
+                                        piece.vertices[t[2]] - piece.vertices[t[0]]));
+      for (const Tab& tab : piece.tabs)
+        for (const auto& flap : tab.flaps) covered += std::abs(signed_area(flap));
+      for (const PieceSeam& seam : piece.seams) tabbed[seam.label] = tabbed[seam.label] || seam.tab;
+      texts.push_back(piece.number);
+      texts.insert(texts.end(), piece.labels.begin(), piece.labels.end());
+    }
+    stats.page_fill.push_back(area.prod() > 0 ? covered / area.prod() : 0.0);
+  }
+  stats.seams = static_cast<int>(tabbed.size());
+  for (const auto& [label, tab] : tabbed) stats.seams_without_tab += tab ? 0 : 1;
+  stats.smallest_text_mm = texts.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  std::vector<std::array<Vec2, 4>> boxes;
+  for (const Label& text : texts) {
+    stats.smallest_text_mm = std::min(stats.smallest_text_mm, text.size_mm);
+    boxes.push_back(label_box(text));
+  }
+  // Texts of one page only can overlap; texts of different pages have far-apart boxes too
+  // rarely to matter, so pairs are judged page by page.
+  std::size_t first = 0;
+  for (const Page& page : layout.pages) {
+    std::size_t count = 0;
+    for (const PlacedPiece& piece : page.pieces) count += 1 + piece.labels.size();
+    for (std::size_t i = first; i < first + count; ++i)
+      for (std::size_t j = i + 1; j < first + count; ++j)
+        if (convex_overlap(boxes[i].data(), 4, boxes[j].data(), 4, 0.0)) ++stats.overlapping_text;
+    first += count;
+  }
+  return stats;
 }
 
 }  // namespace
@@ -453,7 +502,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
     orientations.push_back(orient_piece(p.strips[pieces[i].strip], pieces[i], p.area));
     const Orientation& o = orientations.back();
-    arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, o.box, options);
+    arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, o.box, options, warnings);
     if (o.fits && o.box.size.minCoeff() > 0) {
       packed.push_back(i);
       sizes.push_back(o.box.size);
@@ -491,6 +540,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   for (int i = 0; i < static_cast<int>(layout.pages.size()); ++i)
     add_page_furniture(layout.pages[i], i, static_cast<int>(layout.pages.size()), options,
                        p.mm_per_unit);
+  layout.stats = layout_stats(layout, p.area);
   return layout;
 }
 

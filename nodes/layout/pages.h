@@ -37,7 +37,6 @@
 
 namespace papercraft {
 
-
 /// "A3", "A4", "A5", "Letter", "Legal", "Tabloid" (case-insensitive) or "<width>x<height>"
 /// in millimetres ("200x300"); portrait.
 /// \throws InvalidInputException for any other name or a non-positive size.
@@ -66,14 +65,14 @@ struct LayoutOptions {
   /// Bend angle from which a fold line is a real crease (drawn in full mountain/valley
   /// style); folds between fold_angle_degrees and this are gentle bends.
   double strong_fold_angle_degrees = 10.0;
-  double spacing_mm = 2.0;      // gap between the bounding boxes of pieces
-  double label_size_mm = 2.5;   // seam label text height
+  double spacing_mm = 2.0;         // gap between the bounding boxes of pieces
+  double label_size_mm = 2.5;      // seam label text height
+  double min_text_mm = 2.0;        // no label or number is printed smaller
   double alignment_mark_mm = 3.0;  // tick across the cut line where two seams meet (0: none)
-  double number_size_mm = 4.0;  // piece number text height (smaller on thin pieces)
-  double footer_mm = 8.0;       // band at the bottom of the printable area: scale bar
+  double number_size_mm = 3.0;     // piece number text height (down to min_text_mm on thin pieces)
+  double footer_mm = 8.0;          // band at the bottom of the printable area: scale bar
   PackingMethod packing = PackingMethod::MaxRects;
 };
-
 
 /// Lays out `strips` on pages (see the file comment for conventions).
 ///

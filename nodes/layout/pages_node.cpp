@@ -38,6 +38,16 @@ void register_layout_pages(Registry& registry) {
               "tab_width_mm", [](O & o) -> auto& { return o.tab_width_mm; },
               "glue tab width (0: no tabs)", at_least(0))
           .add(
+              "label_size_mm", [](O & o) -> auto& { return o.label_size_mm; },
+              "seam label text height", greater_than(0))
+          .add(
+              "number_size_mm", [](O & o) -> auto& { return o.number_size_mm; },
+              "piece number text height (smaller on thin pieces, not below min_text_mm)",
+              greater_than(0))
+          .add(
+              "min_text_mm", [](O & o) -> auto& { return o.min_text_mm; },
+              "no label or number is printed smaller", greater_than(0))
+          .add(
               "alignment_mark_mm", [](O & o) -> auto& { return o.alignment_mark_mm; },
               "tick printed across the cut line where two seams meet, on both pieces (0: none)",
               at_least(0))
@@ -74,6 +84,11 @@ void register_layout_pages(Registry& registry) {
                     in.model->update([&](ModelRecord& record) {
                       record.pages = static_cast<int>(layout->pages.size());
                       record.shelf_pages = layout->shelf_page_count;
+                      record.page_fill = layout->stats.page_fill;
+                      record.seams = layout->stats.seams;
+                      record.seams_without_tab = layout->stats.seams_without_tab;
+                      record.smallest_text_mm = layout->stats.smallest_text_mm;
+                      record.overlapping_text = layout->stats.overlapping_text;
                     });
                     Pattern pattern;
                     pattern.strips = strips;

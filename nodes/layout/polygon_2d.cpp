@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 namespace papercraft::layout_internal {
 namespace {
@@ -153,6 +154,53 @@ std::array<Vec2, 4> text_box(const Vec2& centre, const Vec2& direction, double s
   const Vec2 across = Vec2(-direction.y(), direction.x()).normalized() * (kHalfLineEm * size);
   return {centre - along - across, centre + along - across, centre + along + across,
           centre - along + across};
+}
+
+namespace {
+
+// The interval [t0, t1] of a + t (b - a), t in [0, 1], inside the convex polygon; empty when
+// t0 >= t1.
+std::pair<double, double> inside_interval(const Vec2& a, const Vec2& b,
+                                          const std::array<Vec2, 4>& convex) {
+  double area = 0;
+  for (int i = 0; i < 4; ++i) area += cross(convex[i], convex[(i + 1) % 4]);
+  const double orientation = area >= 0 ? 1.0 : -1.0;
+  double t0 = 0, t1 = 1;
+  const Vec2 d = b - a;
+  for (int i = 0; i < 4; ++i) {
+    const Vec2 p = convex[i], q = convex[(i + 1) % 4];
+    // Inside: orientation * cross(q - p, x - p) > 0.
+    const double at_a = orientation * cross(q - p, a - p);
+    const double slope = orientation * cross(q - p, d);
+    if (slope == 0) {
+      if (at_a <= 0) return {1, 0};
+      continue;
+    }
+    const double t = -at_a / slope;
+    if (slope > 0)
+      t0 = std::max(t0, t);
+    else
+      t1 = std::min(t1, t);
+  }
+  return {t0, t1};
+}
+
+}  // namespace
+
+std::vector<std::array<Vec2, 2>> segment_outside(const Vec2& a, const Vec2& b,
+                                                 const std::array<Vec2, 4>& convex) {
+  const auto [t0, t1] = inside_interval(a, b, convex);
+  if (t0 >= t1) return {{a, b}};
+  std::vector<std::array<Vec2, 2>> parts;
+  const Vec2 d = b - a;
+  if (t0 > 1e-9) parts.push_back({a, a + t0 * d});
+  if (t1 < 1 - 1e-9) parts.push_back({a + t1 * d, b});
+  return parts;
+}
+
+bool segment_crosses(const Vec2& a, const Vec2& b, const std::array<Vec2, 4>& convex) {
+  const auto [t0, t1] = inside_interval(a, b, convex);
+  return t0 < t1;
 }
 
 }  // namespace papercraft::layout_internal

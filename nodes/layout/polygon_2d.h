@@ -76,6 +76,14 @@ struct Box2 {
 std::vector<Vec2> clip(const std::vector<Vec2>& polygon,
                        const std::function<double(const Vec2&)>& side);
 
+/// The parts of segment a-b outside the convex polygon (corners counter-clockwise or
+/// clockwise): none, one or two segments (Cyrus-Beck).
+std::vector<std::array<Vec2, 2>> segment_outside(const Vec2& a, const Vec2& b,
+                                                 const std::array<Vec2, 4>& convex);
+
+/// True when segment a-b passes through the interior of the convex quad.
+bool segment_crosses(const Vec2& a, const Vec2& b, const std::array<Vec2, 4>& convex);
+
 /// The box a line of `characters` characters of height `size` takes, centred on `centre`
 /// and running along `direction`: corners counter-clockwise in the text's frame.
 std::array<Vec2, 4> text_box(const Vec2& centre, const Vec2& direction, double size,

@@ -548,7 +548,7 @@ TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
   expect_valid_layout(layout, wide, options);
   const PlacedPiece& piece = layout.pages.at(0).pieces.at(0);
   ASSERT_EQ(piece.tabs.size(), 1u);
-  EXPECT_TRUE(layout.warnings.empty());
+  EXPECT_TRUE(layout.warnings.empty()) << (layout.warnings.empty() ? "" : layout.warnings[0]);
 
   const auto narrow = slotted(1);
   layout = layout_pages(narrow, options);
