@@ -142,8 +142,9 @@ struct PatternLayout {
   double margin_mm = 10.0;
   double mm_per_unit = 1.0;
   std::vector<Page> pages;
-  /// Pages the plain shelf packing needs for the same pieces (for the report).
+  /// Pages the plain shelf packing and the rectangle packing need for the same pieces.
   int shelf_page_count = 0;
+  int rectangle_page_count = 0;
   /// Strips that did not fit a page and were split, pieces that still do not fit
   /// (they overflow their page), seams without a partner or without room for a tab.
   std::vector<std::string> warnings;

@@ -17,6 +17,7 @@
 #include "core/errors.h"
 #include "nodes/layout/annotations.h"
 #include "nodes/layout/format_mm.h"
+#include "nodes/layout/nesting.h"
 #include "nodes/layout/pieces.h"
 #include "nodes/layout/polygon_2d.h"
 #include "nodes/layout/rectangle_packing.h"
@@ -40,6 +41,10 @@ using layout_internal::format_mm;
 using layout_internal::hull_fits;
 using layout_internal::kDegree;
 using layout_internal::match_seam_edges;
+using layout_internal::nest_shapes;
+using layout_internal::NestOptions;
+using layout_internal::NestPlacement;
+using layout_internal::NestShape;
 using layout_internal::OrientedBox;
 using layout_internal::pack_with_spacing;
 using layout_internal::PackResult;
@@ -237,10 +242,15 @@ Orientation orient_piece(const StripData& data, const Piece& piece, const Vec2& 
   return o;
 }
 
+// The piece on the page: page = flip_y(rotate(theta) * p) + translation (p in the strip frame,
+// mm).
+PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const OrientedBox& box,
+                           double theta, const Vec2& translation, const LayoutOptions& options,
+                           double mm_per_unit);
+
 PlacedPiece place_piece(const StripData& data, const Piece& piece, const OrientedBox& box,
                         const PackedRectangle& at, const LayoutOptions& options,
                         double mm_per_unit) {
-  const FlatStrip& strip = *data.strip;
   double theta = -box.angle;
   double min_x = box.min.x(), max_y = box.min.y() + box.size.y();
   if (at.rotated) {
@@ -248,10 +258,17 @@ PlacedPiece place_piece(const StripData& data, const Piece& piece, const Oriente
     min_x = -(box.min.y() + box.size.y());
     max_y = box.min.x() + box.size.x();
   }
+  const Vec2 translation(options.margin_mm + at.x - min_x, options.margin_mm + at.y + max_y);
+  return place_piece_at(data, piece, box, theta, translation, options, mm_per_unit);
+}
+
+PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const OrientedBox& box,
+                           double theta, const Vec2& translation, const LayoutOptions& options,
+                           double mm_per_unit) {
+  const FlatStrip& strip = *data.strip;
   Eigen::Matrix2d rotation;
   rotation << std::cos(theta), -std::sin(theta), std::sin(theta), std::cos(theta);
   const Eigen::Matrix2d linear = Eigen::Vector2d(1, -1).asDiagonal() * rotation;
-  const Vec2 translation(options.margin_mm + at.x - min_x, options.margin_mm + at.y + max_y);
   auto to_page = [&](const Vec2& p) { return Vec2(linear * p + translation); };
   auto direction_degrees = [&](const Vec2& d) { return upright_degrees(linear * d); };
 
@@ -516,24 +533,64 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
                            " mm) and overflows its page: lower height_mm or use a larger page");
     }
   }
+  const PackingMethod rectangles =
+      options.packing == PackingMethod::Nest ? PackingMethod::MaxRects : options.packing;
   const PackResult result =
-      pack_with_spacing(sizes, p.area.x(), p.area.y(), options.spacing_mm, options.packing);
-  layout.shelf_page_count = (options.packing == PackingMethod::Shelf
+      pack_with_spacing(sizes, p.area.x(), p.area.y(), options.spacing_mm, rectangles);
+  layout.shelf_page_count = (rectangles == PackingMethod::Shelf
                                  ? result.pages
                                  : pack_with_spacing(sizes, p.area.x(), p.area.y(),
                                                      options.spacing_mm, PackingMethod::Shelf)
                                        .pages) +
                             static_cast<int>(oversized.size());
-  layout.pages.resize(result.pages + oversized.size());
+  layout.rectangle_page_count = result.pages + static_cast<int>(oversized.size());
+  // Nesting by outlines; kept only where it needs no more pages than the rectangles.
+  std::vector<NestPlacement> nested;
+  int nested_pages = 0;
+  if (options.packing == PackingMethod::Nest && !packed.empty()) {
+    std::vector<NestShape> shapes;
+    for (const int i : packed) {
+      const StripData& data = p.strips[pieces[i].strip];
+      NestShape shape;
+      for (const int t : pieces[i].triangles) {
+        const Triangle& tri = data.strip->triangles[t];
+        shape.convex.push_back({data.points[tri[0]], data.points[tri[1]], data.points[tri[2]]});
+      }
+      for (const Flap& flap : pieces[i].flaps) {
+        std::vector<Vec2> outline(flap.base.begin(), flap.base.end());
+        outline.insert(outline.end(), flap.outer.begin(), flap.outer.end());
+        shape.convex.push_back(convex_hull(outline));
+      }
+      for (const auto& mark : pieces[i].marks) shape.convex.push_back({mark[0], mark[1]});
+      shapes.push_back(std::move(shape));
+    }
+    NestOptions nest;
+    nest.spacing_mm = options.spacing_mm;
+    nest.rotations = options.nest_rotations;
+    nest.cell_mm = options.nest_cell_mm;
+    nested = nest_shapes(shapes, p.area, nest, &nested_pages);
+    const bool complete = std::all_of(nested.begin(), nested.end(),
+                                      [](const NestPlacement& n) { return n.page >= 0; });
+    if (!complete || nested_pages > result.pages) nested.clear();
+  }
+  const int packed_pages = nested.empty() ? result.pages : nested_pages;
+  layout.pages.resize(packed_pages + oversized.size());
   for (std::size_t k = 0; k < packed.size(); ++k) {
     const int i = packed[k];
+    if (!nested.empty()) {
+      const NestPlacement& at = nested[k];
+      layout.pages[at.page].pieces.push_back(place_piece_at(
+          p.strips[pieces[i].strip], pieces[i], orientations[i].box, at.angle,
+          at.offset + Vec2(options.margin_mm, options.margin_mm), options, p.mm_per_unit));
+      continue;
+    }
     const PackedRectangle& at = result.placements[k];
     layout.pages[at.page].pieces.push_back(place_piece(
         p.strips[pieces[i].strip], pieces[i], orientations[i].box, at, options, p.mm_per_unit));
   }
   for (std::size_t k = 0; k < oversized.size(); ++k) {
     const int i = oversized[k];
-    layout.pages[result.pages + k].pieces.push_back(
+    layout.pages[packed_pages + k].pieces.push_back(
         place_piece(p.strips[pieces[i].strip], pieces[i], orientations[i].box, {0, 0, 0, false},
                     options, p.mm_per_unit));
   }

@@ -46,6 +46,8 @@ PageSize page_size_from_name(std::string_view name);
 std::string page_size_name(const PageSize& page);
 
 enum class PackingMethod {
+  Nest,      // true outlines at every nest_rotations step (nesting.h); MaxRects where that is fewer
+             // pages
   MaxRects,  // maximal rectangles with 90 degree rotation, several orders; never worse than Shelf
   Shelf,     // next-fit decreasing height shelves (the plain baseline)
 };
@@ -71,7 +73,9 @@ struct LayoutOptions {
   double alignment_mark_mm = 3.0;  // tick across the cut line where two seams meet (0: none)
   double number_size_mm = 3.0;     // piece number text height (down to min_text_mm on thin pieces)
   double footer_mm = 8.0;          // band at the bottom of the printable area: scale bar
-  PackingMethod packing = PackingMethod::MaxRects;
+  PackingMethod packing = PackingMethod::Nest;
+  int nest_rotations = 24;    // Nest: rotations tried (every 360 / n degrees; never mirrored)
+  double nest_cell_mm = 0.5;  // Nest: raster cell
 };
 
 /// Lays out `strips` on pages (see the file comment for conventions).
@@ -86,8 +90,8 @@ struct LayoutOptions {
 /// reversed 3D endpoints; a label naming more than one pair of edge chains (a seam whose
 /// strip was split, or a label reused) is printed with a suffix per pair (A1.1, A1.2). The
 /// seams a split creates are labelled <strip id>-<k> (7-1, 7-2).
-/// Known limit: pieces are packed by their bounding rectangles, not nested shapes; a
-/// single triangle larger than the page cannot be split and overflows its own page.
+/// Known limit: a single triangle larger than the page cannot be split and overflows its own
+/// page.
 PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options = {});
 
 /// Millimetres per model unit that layout_pages uses for `strips`.

@@ -22,11 +22,14 @@ PageSize page_of(const ParamValue& value) {
   }
 }
 
-}  // namespace
+// layout.rectangles' options: the same, packed by rectangles unless told otherwise.
+struct RectangleLayoutOptions : LayoutOptions {
+  RectangleLayoutOptions() { packing = PackingMethod::MaxRects; }
+};
 
-void register_layout_pages(Registry& registry) {
-  using O = LayoutOptions;
-  static const auto table =
+template <class O>
+ParamTable<O> layout_table(bool nesting) {
+  auto table =
       ParamTable<O>()
           .convert(
               "page", ParamType::String, [](O & o) -> auto& { return o.page; }, page_size_name,
@@ -60,42 +63,79 @@ void register_layout_pages(Registry& registry) {
               "folds bent less than this are drawn as faint gentle-bend marks", between(0, 180))
           .add(
               "spacing_mm", [](O & o) -> auto& { return o.spacing_mm; }, "gap between pieces",
-              at_least(0))
-          .choice(
-              "packing", [](O & o) -> auto& { return o.packing; },
-              std::vector<std::pair<std::string, PackingMethod>>{
-                  {"maxrects", PackingMethod::MaxRects}, {"shelf", PackingMethod::Shelf}},
-              "maxrects or shelf");
-  registry.add({.name = "layout.pages",
-                .summary = "real-world scale, tightest rotation, MaxRects packing onto pages",
-                .input = MessageType::of<ModelStrips>(),
-                .outputs = {{"out", MessageType::of<Pattern>()}},
-                .params = table.specs(),
-                .create = [](const Params& params, const NodeContext&) {
-                  const LayoutOptions options = table.read(params);
-                  return make_body([options](const Envelope& in, Emitter& out) {
-                    auto strips = in.get_shared<ModelStrips>();
-                    // The print scale is the run's, fixed when the model was loaded.
-                    LayoutOptions run_options = options;
-                    run_options.scale = in.model->mm_per_unit();
-                    auto layout =
-                        std::make_shared<PatternLayout>(layout_pages(strips->flat, run_options));
-                    for (const auto& warning : layout->warnings) in.model->note(warning);
-                    in.model->update([&](ModelRecord& record) {
-                      record.pages = static_cast<int>(layout->pages.size());
-                      record.shelf_pages = layout->shelf_page_count;
-                      record.page_fill = layout->stats.page_fill;
-                      record.seams = layout->stats.seams;
-                      record.seams_without_tab = layout->stats.seams_without_tab;
-                      record.smallest_text_mm = layout->stats.smallest_text_mm;
-                      record.overlapping_text = layout->stats.overlapping_text;
-                    });
-                    Pattern pattern;
-                    pattern.strips = strips;
-                    pattern.layout = layout;
-                    out.emit("out", std::move(pattern));
-                  });
-                }});
+              at_least(0));
+  if (nesting) {
+    table
+        .add(
+            "nest_rotations", [](O & o) -> auto& { return o.nest_rotations; },
+            "rotations tried per piece (every 360/n degrees)", at_least(1))
+        .add(
+            "nest_cell_mm", [](O & o) -> auto& { return o.nest_cell_mm; },
+            "raster cell of the nesting (finer packs tighter, slower)", greater_than(0))
+        .choice(
+            "packing", [](O & o) -> auto& { return o.packing; },
+            std::vector<std::pair<std::string, PackingMethod>>{
+                {"nest", PackingMethod::Nest},
+                {"maxrects", PackingMethod::MaxRects},
+                {"shelf", PackingMethod::Shelf}},
+            "nest (true outlines), maxrects or shelf (bounding rectangles)");
+  } else {
+    table.choice(
+        "packing", [](O & o) -> auto& { return o.packing; },
+        std::vector<std::pair<std::string, PackingMethod>>{{"maxrects", PackingMethod::MaxRects},
+                                                           {"shelf", PackingMethod::Shelf}},
+        "maxrects or shelf");
+  }
+  return table;
+}
+
+template <class O>
+NodeSpec layout_spec(std::string name, std::string summary, const ParamTable<O>& table) {
+  return {.name = std::move(name),
+          .summary = std::move(summary),
+          .input = MessageType::of<ModelStrips>(),
+          .outputs = {{"out", MessageType::of<Pattern>()}},
+          .params = table.specs(),
+          .create = [&table](const Params& params, const NodeContext&) {
+            const LayoutOptions options = table.read(params);
+            return make_body([options](const Envelope& in, Emitter& out) {
+              auto strips = in.get_shared<ModelStrips>();
+              // The print scale is the run's, fixed when the model was loaded.
+              LayoutOptions run_options = options;
+              run_options.scale = in.model->mm_per_unit();
+              auto layout =
+                  std::make_shared<PatternLayout>(layout_pages(strips->flat, run_options));
+              for (const auto& warning : layout->warnings) in.model->note(warning);
+              in.model->update([&](ModelRecord& record) {
+                record.pages = static_cast<int>(layout->pages.size());
+                record.shelf_pages = layout->shelf_page_count;
+                record.page_fill = layout->stats.page_fill;
+                record.seams = layout->stats.seams;
+                record.seams_without_tab = layout->stats.seams_without_tab;
+                record.smallest_text_mm = layout->stats.smallest_text_mm;
+                record.overlapping_text = layout->stats.overlapping_text;
+              });
+              Pattern pattern;
+              pattern.strips = strips;
+              pattern.layout = layout;
+              out.emit("out", std::move(pattern));
+            });
+          }};
+}
+
+}  // namespace
+
+void register_layout_pages(Registry& registry) {
+  static const auto pages = layout_table<LayoutOptions>(true);
+  static const auto rectangles = layout_table<RectangleLayoutOptions>(false);
+  registry.add(layout_spec("layout.pages",
+                           "real scale; pieces nested by their outlines at every 15 degrees "
+                           "(never more pages than rectangle packing)",
+                           pages));
+  registry.add(layout_spec("layout.rectangles",
+                           "real scale; pieces packed by their tightest bounding rectangles "
+                           "(MaxRects), to compare with layout.pages",
+                           rectangles));
 }
 
 }  // namespace papercraft

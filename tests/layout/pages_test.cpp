@@ -5,12 +5,15 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/flat_boundary.h"
 #include "support/layout_strips.h"
 
 namespace papercraft {
@@ -333,7 +336,7 @@ TEST(LayoutPages, BoxHasMountainFoldsMatchingLabelsAndOneTabPerSeam) {
   }
   EXPECT_EQ(band.tabs.size(), 3u);
   EXPECT_EQ(band.labels.size(), 4u);  // A twice, T, B
-  EXPECT_EQ(band.number.text, "1");  // pieces are numbered 1..N
+  EXPECT_EQ(band.number.text, "1");   // pieces are numbered 1..N
   for (int cap : {1, 2}) {
     const PlacedPiece& piece = *pieces_of(layout, cap).at(0);
     EXPECT_TRUE(piece.folds.empty());  // the diagonal is flat
@@ -587,6 +590,82 @@ TEST(LayoutPages, RandomStripsWithSeamsKeepEveryInvariant) {
   }
   std::cout << "[ pages    ] layout " << pages << ", shelf " << shelf_pages
             << " on 4 sets of 24 seamed strips\n";
+}
+
+// Half rings (arcs packed by rectangles leave their insides empty): nesting keeps the
+// spacing between any two pieces, measured exactly on their triangles and tab flaps, and never
+// needs more pages than the rectangle packer; on arcs it needs fewer.
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 d = b - a;
+  const double t =
+      d.squaredNorm() > 0 ? std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+  return (p - a - t * d).norm();
+}
+
+double polygon_distance(const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      best = std::min(best, segment_distance(a[i], b[j], b[(j + 1) % b.size()]));
+      best = std::min(best, segment_distance(b[j], a[i], a[(i + 1) % a.size()]));
+    }
+  return best;
+}
+
+FlatStrip half_ring(int id, double inner, double outer, int segments) {
+  FlatStrip s;
+  s.id = id;
+  for (int k = 0; k <= segments; ++k) {
+    const double angle = std::numbers::pi * k / segments;
+    for (double r : {inner, outer}) {
+      const Vec2 p(r * std::cos(angle), r * std::sin(angle));
+      s.vertices2d.push_back(p);
+      s.vertices3d.emplace_back(p.x(), p.y(), 0.0);
+    }
+  }
+  for (int k = 0; k < segments; ++k) {
+    const int a = 2 * k, b = 2 * k + 1, c = 2 * k + 2, d = 2 * k + 3;
+    s.triangles.push_back({a, b, c});
+    s.triangles.push_back({b, d, c});
+  }
+  s.boundary = flat_boundary(s.triangles);
+  for (BoundaryEdge& e : s.boundary) e.kind = EdgeKind::Open;
+  return s;
+}
+
+TEST(LayoutPages, NestingKeepsTheGapAndNeedsNoMorePagesThanRectangles) {
+  std::vector<FlatStrip> strips;
+  for (int k = 0; k < 30; ++k)
+    strips.push_back(half_ring(k, 30 + (k % 5) * 4, 40 + (k % 5) * 4, 24));
+  LayoutOptions options;
+  options.scale = 1;
+  options.spacing_mm = 2;
+  const PatternLayout nested = layout_pages(strips, options);
+  expect_valid_layout(nested, strips, options);
+  options.packing = PackingMethod::MaxRects;
+  const PatternLayout boxed = layout_pages(strips, options);
+  EXPECT_LE(nested.pages.size(), boxed.pages.size());
+  EXPECT_LT(nested.pages.size(), boxed.pages.size()) << "nested arcs must save paper";
+  EXPECT_EQ(nested.rectangle_page_count, static_cast<int>(boxed.pages.size()));
+  for (const Page& page : nested.pages) {
+    std::vector<std::vector<std::vector<Vec2>>> shapes;  // per piece: its polygons
+    for (const PlacedPiece& piece : page.pieces) {
+      std::vector<std::vector<Vec2>> polygons;
+      for (const Triangle& t : piece.triangles)
+        polygons.push_back({piece.vertices[t[0]], piece.vertices[t[1]], piece.vertices[t[2]]});
+      for (const Tab& tab : piece.tabs)
+        for (const auto& flap : tab.flaps) polygons.push_back(flap);
+      shapes.push_back(std::move(polygons));
+    }
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+      for (std::size_t j = i + 1; j < shapes.size(); ++j)
+        for (const auto& a : shapes[i])
+          for (const auto& b : shapes[j])
+            ASSERT_GE(polygon_distance(a, b), options.spacing_mm - 1e-6)
+                << "pieces " << page.pieces[i].name << " and " << page.pieces[j].name;
+  }
+  std::cout << "[ pages    ] nested " << nested.pages.size() << ", rectangles "
+            << boxed.pages.size() << " for 30 half rings\n";
 }
 
 // Rectangles' pages: MaxRects never worse than the shelf baseline; rectangles keep the

@@ -1,0 +1,232 @@
+// Raster bottom-left fill of pieces by their outlines (see nesting.h).
+#include "nodes/layout/nesting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <utility>
+
+namespace papercraft::layout_internal {
+namespace {
+
+// A shape rasterised at one rotation: per row, the covered cells as half-open intervals.
+struct Mask {
+  double angle = 0.0;
+  Vec2 min = Vec2::Zero();  // area-frame coordinates of cell (0, 0)'s corner
+  int width = 0;
+  int height = 0;
+  std::vector<std::vector<std::pair<int, int>>> rows;
+  long cells = 0;
+};
+
+Vec2 turned(const Vec2& p, double c, double s) {
+  return Vec2(c * p.x() - s * p.y(), -(s * p.x() + c * p.y()));
+}
+
+// The x range of convex polygon `poly` within the band lo <= y <= hi, if any.
+bool band_range(const std::vector<Vec2>& poly, double lo, double hi, double* x0, double* x1) {
+  double left = std::numeric_limits<double>::infinity(), right = -left;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = poly[i];
+    const Vec2& b = poly[(i + 1) % n];
+    if (a.y() >= lo && a.y() <= hi) left = std::min(left, a.x()), right = std::max(right, a.x());
+    for (const double y : {lo, hi}) {
+      if ((a.y() - y) * (b.y() - y) < 0) {
+        const double x = a.x() + (y - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+        left = std::min(left, x);
+        right = std::max(right, x);
+      }
+    }
+  }
+  *x0 = left;
+  *x1 = right;
+  return left <= right;
+}
+
+// Conservative: every cell the shape touches is covered.
+Mask rasterise(const NestShape& shape, double angle, double cell) {
+  Mask mask;
+  mask.angle = angle;
+  const double c = std::cos(angle), s = std::sin(angle);
+  std::vector<std::vector<Vec2>> polygons;
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const auto& poly : shape.convex) {
+    std::vector<Vec2> moved;
+    for (const Vec2& p : poly) {
+      moved.push_back(turned(p, c, s));
+      lo = lo.cwiseMin(moved.back());
+      hi = hi.cwiseMax(moved.back());
+    }
+    polygons.push_back(std::move(moved));
+  }
+  if (polygons.empty()) return mask;
+  mask.min = lo;
+  mask.width = static_cast<int>(std::floor((hi.x() - lo.x()) / cell)) + 1;
+  mask.height = static_cast<int>(std::floor((hi.y() - lo.y()) / cell)) + 1;
+  mask.rows.assign(mask.height, {});
+  for (const auto& poly : polygons) {
+    double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
+    for (const Vec2& p : poly) ylo = std::min(ylo, p.y()), yhi = std::max(yhi, p.y());
+    const int r0 = std::max(0, static_cast<int>(std::floor((ylo - lo.y()) / cell)));
+    const int r1 = std::min(mask.height - 1, static_cast<int>(std::floor((yhi - lo.y()) / cell)));
+    for (int r = r0; r <= r1; ++r) {
+      double x0, x1;
+      if (!band_range(poly, lo.y() + r * cell, lo.y() + (r + 1) * cell, &x0, &x1)) continue;
+      const int c0 = std::max(0, static_cast<int>(std::floor((x0 - lo.x()) / cell)));
+      const int c1 = std::min(mask.width - 1, static_cast<int>(std::floor((x1 - lo.x()) / cell)));
+      mask.rows[r].push_back({c0, c1 + 1});
+    }
+  }
+  for (auto& row : mask.rows) {
+    std::sort(row.begin(), row.end());
+    std::vector<std::pair<int, int>> merged;
+    for (const auto& interval : row) {
+      if (!merged.empty() && interval.first <= merged.back().second)
+        merged.back().second = std::max(merged.back().second, interval.second);
+      else
+        merged.push_back(interval);
+    }
+    row = std::move(merged);
+    for (const auto& [a, b] : row) mask.cells += b - a;
+  }
+  return mask;
+}
+
+// A page's occupied cells (grown by the spacing) and, per cell, the free run to its right.
+class Sheet {
+ public:
+  Sheet(int width, int height)
+      : width_(width),
+        height_(height),
+        used_(std::size_t(width) * height, 0),
+        run_(std::size_t(width) * height) {
+    for (int y = 0; y < height_; ++y) update_row(y);
+  }
+
+  // The highest, then leftmost, cell where `mask` fits, among those whose bottom lies above
+  // `bound` (exclusive); false when none does.
+  bool find(const Mask& mask, int bound, int* out_x, int* out_y) const {
+    if (mask.width > width_ || mask.height > height_) return false;
+    for (int oy = 0; oy + mask.height <= height_ && oy + mask.height < bound; ++oy) {
+      int ox = 0;
+      while (ox + mask.width <= width_) {
+        int next = -1;
+        for (int r = 0; r < mask.height && next < 0; ++r) {
+          const int* run = &run_[std::size_t(oy + r) * width_];
+          for (const auto& [a, b] : mask.rows[r]) {
+            const int free = run[ox + a];
+            if (free < b - a) {
+              next = ox + a + free + 1 - a;
+              break;
+            }
+          }
+        }
+        if (next < 0) {
+          *out_x = ox;
+          *out_y = oy;
+          return true;
+        }
+        ox = next;
+      }
+    }
+    return false;
+  }
+
+  void place(const Mask& mask, int ox, int oy, int grow) {
+    int y_lo = height_, y_hi = -1;
+    for (int r = 0; r < mask.height; ++r) {
+      for (const auto& [a, b] : mask.rows[r]) {
+        const int y0 = std::max(0, oy + r - grow), y1 = std::min(height_ - 1, oy + r + grow);
+        const int x0 = std::max(0, ox + a - grow), x1 = std::min(width_, ox + b + grow);
+        for (int y = y0; y <= y1; ++y)
+          std::fill(used_.begin() + std::size_t(y) * width_ + x0,
+                    used_.begin() + std::size_t(y) * width_ + x1, 1);
+        y_lo = std::min(y_lo, y0);
+        y_hi = std::max(y_hi, y1);
+      }
+    }
+    for (int y = y_lo; y <= y_hi; ++y) update_row(y);
+  }
+
+ private:
+  void update_row(int y) {
+    int free = 0;
+    for (int x = width_ - 1; x >= 0; --x) {
+      free = used_[std::size_t(y) * width_ + x] ? 0 : free + 1;
+      run_[std::size_t(y) * width_ + x] = free;
+    }
+  }
+
+  int width_, height_;
+  std::vector<char> used_;
+  std::vector<int> run_;
+};
+
+}  // namespace
+
+std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, const Vec2& area,
+                                       const NestOptions& options, int* pages) {
+  // A raster of at most ~1.5 million cells per page.
+  double cell = options.cell_mm;
+  if (area.prod() / (cell * cell) > 1.5e6) cell = std::sqrt(area.prod() / 1.5e6);
+  const int width = static_cast<int>(std::floor(area.x() / cell));
+  const int height = static_cast<int>(std::floor(area.y() / cell));
+  const int grow = static_cast<int>(std::ceil(options.spacing_mm / cell - 1e-9));
+  const int rotations = std::max(1, options.rotations);
+
+  std::vector<std::vector<Mask>> masks(shapes.size());
+  std::vector<int> order(shapes.size());
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    order[i] = static_cast<int>(i);
+    for (int k = 0; k < rotations; ++k)
+      masks[i].push_back(rasterise(shapes[i], 2 * std::numbers::pi * k / rotations, cell));
+  }
+  // Largest first; ties in input order.
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const long ca = masks[a].empty() ? 0 : masks[a][0].cells;
+    const long cb = masks[b].empty() ? 0 : masks[b][0].cells;
+    return ca > cb;
+  });
+
+  std::vector<NestPlacement> placements(shapes.size());
+  std::vector<Sheet> sheets;
+  const Sheet empty(std::max(width, 1), std::max(height, 1));
+  for (int i : order) {
+    if (masks[i].empty() || masks[i][0].cells == 0) continue;
+    bool fits_somewhere = false;
+    for (const Mask& mask : masks[i]) {
+      int x, y;
+      if (empty.find(mask, std::numeric_limits<int>::max(), &x, &y)) {
+        fits_somewhere = true;
+        break;
+      }
+    }
+    if (!fits_somewhere) continue;
+    for (std::size_t page = 0;; ++page) {
+      if (page == sheets.size()) sheets.emplace_back(width, height);
+      int best = -1, best_x = 0, best_y = 0, bound = std::numeric_limits<int>::max();
+      for (int k = 0; k < static_cast<int>(masks[i].size()); ++k) {
+        const Mask& mask = masks[i][k];
+        int x, y;
+        if (!sheets[page].find(mask, bound, &x, &y)) continue;
+        const int bottom = y + mask.height;
+        if (best < 0 || bottom < bound || (bottom == bound && x < best_x)) {
+          best = k, best_x = x, best_y = y, bound = bottom;
+        }
+      }
+      if (best < 0) continue;
+      const Mask& mask = masks[i][best];
+      sheets[page].place(mask, best_x, best_y, grow);
+      placements[i].page = static_cast<int>(page);
+      placements[i].angle = mask.angle;
+      placements[i].offset = Vec2(best_x * cell, best_y * cell) - mask.min;
+      break;
+    }
+  }
+  *pages = static_cast<int>(sheets.size());
+  return placements;
+}
+
+}  // namespace papercraft::layout_internal

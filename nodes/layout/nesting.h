@@ -1,0 +1,40 @@
+#pragma once
+// Nesting pieces by their true outlines: a raster bottom-left fill. Each piece (its triangles
+// and tab slices) is rasterised conservatively at several rotations, and placed, largest
+// first, on the first page and at the rotation where it lies highest (then leftmost) without
+// coming nearer than the spacing to any piece already there; so pieces go into the
+// concavities of others, which packing by bounding rectangles leaves empty.
+
+#include <array>
+#include <vector>
+
+#include "core/triangle_mesh.h"
+
+namespace papercraft::layout_internal {
+
+/// A piece as the nesting sees it, in its own frame (mm, y up as the strip's frame): convex
+/// polygons (its triangles and its tabs' slices) whose union is the piece.
+struct NestShape {
+  std::vector<std::vector<Vec2>> convex;
+};
+
+struct NestOptions {
+  double cell_mm = 0.5;     // raster cell; coarsened for pages too large for it
+  int rotations = 24;       // every 360 / rotations degrees; never mirrored
+  double spacing_mm = 2.0;  // at least this much paper between two pieces
+};
+
+/// Where a piece goes: page, and the map from its frame to the printable area (mm, origin at
+/// its top-left corner, y down): area = flip_y(rotate(angle) * p) + offset.
+struct NestPlacement {
+  int page = -1;       // -1: the piece fits the area at no rotation
+  double angle = 0.0;  // radians, counter-clockwise in the piece's frame
+  Vec2 offset = Vec2::Zero();
+};
+
+/// Places every shape; returns one placement per shape (input order) and sets *pages. Shapes
+/// that fit at no rotation get page -1. Deterministic.
+std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, const Vec2& area,
+                                       const NestOptions& options, int* pages);
+
+}  // namespace papercraft::layout_internal
