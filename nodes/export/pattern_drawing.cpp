@@ -1,6 +1,8 @@
 #include "nodes/export/pattern_drawing.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "core/errors.h"
 
@@ -14,6 +16,7 @@ struct Pens {
   std::string tab_fill;
   std::string text;
   Pen gentle_mountain, gentle_valley;
+  std::string engrave = "#000000";
 };
 
 Pens preset_pens(StylePreset preset) {
@@ -27,7 +30,8 @@ Pens preset_pens(StylePreset preset) {
               "",
               "#000000",
               {"#8080ff", 0.025, {}},
-              {"#8080ff", 0.025, {0.5, 1.0}}};
+              {"#8080ff", 0.025, {0.5, 1.0}},
+              "#00a000"};
     case StylePreset::Cutter:
       return {{"#000000", 0.1, {}},
               {"#00a000", 0.1, {3.0, 1.0, 0.6, 1.0}},
@@ -96,6 +100,59 @@ std::vector<TexturePatch> page_texture_patches(const Page& page) {
   return patches;
 }
 
+namespace {
+
+// A polyline without repeated points (no zero-length segment reaches a cutter); empty when
+// fewer than two distinct points remain.
+std::vector<Vec2> without_repeats(const std::vector<Vec2>& line, bool closed) {
+  std::vector<Vec2> out;
+  for (const Vec2& p : line)
+    if (out.empty() || (p - out.back()).norm() > 1e-9) out.push_back(p);
+  if (closed)
+    while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-9) out.pop_back();
+  if (out.size() < 2) out.clear();
+  return out;
+}
+
+void drop_repeats(DrawLayer& layer) {
+  for (DrawPath& path : layer.paths) {
+    std::vector<std::vector<Vec2>> lines;
+    for (const auto& line : path.polylines) {
+      auto clean = without_repeats(line, path.closed);
+      if (!clean.empty()) lines.push_back(std::move(clean));
+    }
+    path.polylines = std::move(lines);
+  }
+  layer.paths.erase(std::remove_if(layer.paths.begin(), layer.paths.end(),
+                                   [](const DrawPath& p) { return p.polylines.empty(); }),
+                    layer.paths.end());
+}
+
+}  // namespace
+
+std::vector<DrawLayer> registration_marks(const PageSize& page) {
+  // Silhouette's convention: a filled 5 mm square at the top left, 20 mm L-brackets 0.3 mm
+  // thick at the top right and the bottom left, all 10 mm from the paper's edges.
+  constexpr double kInset = 10.0, kSquare = 5.0, kArm = 20.0, kThick = 0.3;
+  const double w = page.width_mm, h = page.height_mm;
+  DrawLayer marks{"regmarks", {}, {}};
+  DrawPath square{{}, true, false, Pen{"#000000", 0.0, {}}, "#000000"};
+  square.polylines.push_back({{kInset, kInset},
+                              {kInset + kSquare, kInset},
+                              {kInset + kSquare, kInset + kSquare},
+                              {kInset, kInset + kSquare}});
+  // Each bracket as one filled L: its corner on the inset lines, arms along the edges.
+  const Vec2 tr(w - kInset, kInset), bl(kInset, h - kInset);
+  square.polylines.push_back({tr, tr + Vec2(0, kArm), tr + Vec2(-kThick, kArm),
+                              tr + Vec2(-kThick, kThick), tr + Vec2(-kArm, kThick),
+                              tr + Vec2(-kArm, 0)});
+  square.polylines.push_back({bl, bl + Vec2(kArm, 0), bl + Vec2(kArm, -kThick),
+                              bl + Vec2(kThick, -kThick), bl + Vec2(kThick, -kArm),
+                              bl + Vec2(0, -kArm)});
+  marks.paths.push_back(std::move(square));
+  return {marks};
+}
+
 std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int page_index,
                                             const StyleOptions& style) {
   if (page_index < 0 || page_index >= static_cast<int>(layout.pages.size()))
@@ -161,12 +218,51 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
     if (!piece.marks.empty()) {
       DrawPath marks{{}, false, true, pens.print, ""};
       for (const auto& mark : piece.marks) marks.polylines.push_back({mark[0], mark[1]});
-      print.paths.push_back(std::move(marks));
+      labels.paths.push_back(std::move(marks));
     }
     for (const Label& label : piece.labels) labels.texts.push_back({label, pens.text});
     labels.texts.push_back({piece.number, pens.text});
   }
-  return {print, tabs, labels, valley, mountain, cut};
+  std::vector<DrawLayer> layers;
+  switch (style.preset) {
+    case StylePreset::Print:
+      layers = {print, tabs, labels, valley, mountain, cut};
+      break;
+    case StylePreset::Laser: {
+      // Everything that is not cut or scored is engraved, in its own colour on its own layer.
+      DrawLayer engrave{"engrave", {}, {}};
+      for (DrawLayer* layer : {&print, &labels}) {
+        for (DrawPath& path : layer->paths) {
+          path.pen.colour = pens.engrave;
+          engrave.paths.push_back(path);
+        }
+        for (DrawText& text : layer->texts) {
+          text.colour = pens.engrave;
+          engrave.texts.push_back(text);
+        }
+      }
+      DrawLayer score{"score", {}, {}};
+      for (DrawLayer* layer : {&valley, &mountain})
+        score.paths.insert(score.paths.end(), layer->paths.begin(), layer->paths.end());
+      layers = {engrave, score, cut};
+      break;
+    }
+    case StylePreset::Cutter: {
+      // Printed first, then cut along the outline of piece and tabs; folds on a score layer
+      // the cutter can perforate or skip; marks to register the print.
+      DrawLayer score{"score", {}, {}};
+      for (DrawLayer* layer : {&valley, &mountain})
+        score.paths.insert(score.paths.end(), layer->paths.begin(), layer->paths.end());
+      layers = registration_marks(layout.page);
+      layers.push_back(print);
+      layers.push_back(labels);
+      layers.push_back(score);
+      layers.push_back(cut);
+      break;
+    }
+  }
+  for (DrawLayer& layer : layers) drop_repeats(layer);
+  return layers;
 }
 
 }  // namespace papercraft

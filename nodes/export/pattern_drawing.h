@@ -14,6 +14,10 @@
 // matter and still tells where to curve the paper.
 //   cut      one closed path per piece: around the piece and its tabs (each boundary loop a
 //            subpath), so a cutter runs it in one go
+// The laser preset draws three layers: engrave (everything printed: labels, numbers, marks,
+// scale bar, in green), score (all folds, blue hairlines) and cut (red hairline). The cutter
+// preset draws regmarks (Silhouette registration marks), print, labels, score (folds) and cut.
+// No layer holds a zero-length segment.
 
 #include <string>
 #include <string_view>
@@ -64,7 +68,7 @@ struct DrawText {
 };
 
 struct DrawLayer {
-  std::string id;  // cut, mountain, valley, tabs, labels, print
+  std::string id;  // cut, mountain, valley, tabs, labels, print; score, engrave, regmarks
   std::vector<DrawPath> paths;
   std::vector<DrawText> texts;
 };
@@ -72,6 +76,11 @@ struct DrawLayer {
 /// The texture of a page: one patch per triangle of every piece with uvs (clipped to the
 /// triangle) and the patches of its tabs (TexturePatch in core/pattern.h).
 std::vector<TexturePatch> page_texture_patches(const Page& page);
+
+/// The registration marks of the cutter preset on `page` (layer "regmarks"): a filled 5 mm
+/// square at the top left, filled 20 mm L-brackets 0.3 mm thick at the top right and the
+/// bottom left, 10 mm from the paper's edges.
+std::vector<DrawLayer> registration_marks(const PageSize& page);
 
 /// The layers of page `page_index` of `layout`, bottom first (see the file comment).
 /// \throws InvalidInputException if page_index is not a page of the layout.

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
-#include "nodes/export/pattern_drawing.h"
 #include "core/pattern.h"
+#include "nodes/export/pattern_drawing.h"
 
 namespace papercraft {
 

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "nodes/export/pattern_drawing.h"
 #include "core/pattern.h"
+#include "nodes/export/pattern_drawing.h"
 
 namespace papercraft {
 

@@ -300,6 +300,47 @@ void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
     if (!shapes[piece]) shapes[piece] = piece_shapes(strips[pieces[piece].strip], pieces[piece]);
     return *shapes[piece];
   };
+  // Flaps on a chain, and where a run of it takes none, on each of its edges alone (several
+  // small tabs along a curved or crowded seam).
+  auto plan = [&](const Chain& chain) {
+    const Piece& piece = pieces[chain.piece];
+    const StripData& data = strips[piece.strip];
+    PieceShapes& shapes_here = shapes_of(chain.piece);
+    const std::size_t before = shapes_here.slices.size();
+    std::vector<FlapPlan> plans = plan_flaps(data, piece, chain, geometry, shapes_here);
+    const int n = static_cast<int>(piece.loops[chain.loop].size());
+    std::vector<char> covered(n, 0);
+    for (const FlapPlan& p : plans)
+      for (int e : p.edges) covered[e] = 1;
+    for (int i = 0; i < chain.count; ++i) {
+      const int e = (chain.start + i) % n;
+      if (covered[e]) continue;
+      Chain single = chain;
+      single.start = e;
+      single.count = 1;
+      single.closed = false;
+      for (FlapPlan& p : plan_flaps(data, piece, single, geometry, shapes_here)) {
+        for (int f : p.edges) covered[f] = 1;
+        plans.push_back(std::move(p));
+      }
+    }
+    shapes_here.slices.resize(before);
+    shapes_here.slice_boxes.resize(before);
+    return plans;
+  };
+  auto accept = [&](const Chain& chain, std::vector<FlapPlan>& plans, const std::string& label) {
+    PieceShapes& shapes_here = shapes_of(chain.piece);
+    for (const FlapPlan& plan : plans)
+      for (const auto& slice : plan.slices) {
+        Box2 box;
+        for (const Vec2& c : slice) box.add(c);
+        shapes_here.slices.push_back(slice);
+        shapes_here.slice_boxes.push_back(box);
+      }
+    commit_flaps(pieces[chain.piece], chain, label, plans, [&](int edge) {
+      return tab_texture(pieces, strips, seams, chain.piece, chain.loop, edge);
+    });
+  };
   for (const SeamPair& pair : pairs) {
     std::vector<int> sides{pair.first};
     if (pair.second >= 0) {
@@ -308,42 +349,48 @@ void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
           chain_key(chains[pair.first], pieces, strips))
         std::swap(sides[0], sides[1]);
     }
-    int best_side = -1;
-    std::vector<FlapPlan> best_plans;
-    double best_length = 0;
-    for (int side : sides) {
-      const Chain& chain = chains[side];
-      const Piece& piece = pieces[chain.piece];
-      const StripData& data = strips[piece.strip];
-      PieceShapes& piece_shapes_ = shapes_of(chain.piece);
-      const std::size_t slices_before = piece_shapes_.slices.size();
-      std::vector<FlapPlan> plans = plan_flaps(data, piece, chain, geometry, piece_shapes_);
-      piece_shapes_.slices.resize(slices_before);
-      piece_shapes_.slice_boxes.resize(slices_before);
-      const double length = plans_length(plans);
-      if (length > best_length + 1e-9) {
-        best_side = side;
-        best_plans = std::move(plans);
-        best_length = length;
+    // The preferred side takes what it can; the other side takes the edges it left.
+    const Chain& first = chains[sides[0]];
+    std::vector<FlapPlan> first_plans = plan(first);
+    const int n = static_cast<int>(pieces[first.piece].loops[first.loop].size());
+    std::vector<char> covered(n, 0);
+    for (const FlapPlan& p : first_plans)
+      for (int e : p.edges) covered[e] = 1;
+    bool any = !first_plans.empty();
+    if (any) accept(first, first_plans, pair.printed);
+    if (sides.size() > 1) {
+      const Chain& second = chains[sides[1]];
+      const int m = static_cast<int>(pieces[second.piece].loops[second.loop].size());
+      std::vector<char> wanted(m, 0);
+      for (int i = 0; i < first.count; ++i) {
+        const int e = (first.start + i) % n;
+        if (covered[e]) continue;
+        const int id = seams.id[first.piece][first.loop][e];
+        const int partner = id >= 0 ? seams.partner[id] : -1;
+        if (partner < 0) continue;
+        const auto& ref = seams.refs[partner];
+        if (ref[0] == second.piece && ref[1] == second.loop) wanted[ref[2]] = 1;
       }
-      if (best_length >= 0.5 * chain_length(data, piece, chain)) break;
-    }
-    if (best_side < 0) {
-      warnings.push_back("seam " + pair.printed + " has no room for a glue tab on either side");
-      continue;
-    }
-    const Chain& chain = chains[best_side];
-    PieceShapes& piece_shapes_ = shapes_of(chain.piece);
-    for (const FlapPlan& plan : best_plans)
-      for (const auto& slice : plan.slices) {
-        Box2 box;
-        for (const Vec2& c : slice) box.add(c);
-        piece_shapes_.slices.push_back(slice);
-        piece_shapes_.slice_boxes.push_back(box);
+      // The wanted edges of the second chain as runs of consecutive edges.
+      std::vector<FlapPlan> second_plans;
+      for (int i = 0; i < second.count; ++i) {
+        const int e = (second.start + i) % m;
+        const int before = (second.start + i + m - 1) % m;
+        if (!wanted[e] || (i > 0 && wanted[before])) continue;
+        int count = 1;
+        while (i + count < second.count && wanted[(second.start + i + count) % m]) ++count;
+        Chain part = second;
+        part.start = e;
+        part.count = count;
+        part.closed = false;
+        for (FlapPlan& p : plan(part)) second_plans.push_back(std::move(p));
       }
-    commit_flaps(pieces[chain.piece], chain, pair.printed, best_plans, [&](int edge) {
-      return tab_texture(pieces, strips, seams, chain.piece, chain.loop, edge);
-    });
+      if (!second_plans.empty()) {
+        accept(second, second_plans, pair.printed);
+        any = true;
+      }
+    }
+    if (!any) warnings.push_back("seam " + pair.printed + " has no room for a glue tab on either side");
   }
 }
 

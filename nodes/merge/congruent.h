@@ -16,7 +16,7 @@ struct MergeOptions {
   /// its partner than this times the boundary's length. Welding moves the joined strip's
   /// boundary points by up to that much, so it bounds how far a seam's two sides may differ
   /// in length.
-  double congruence_tolerance = 1e-9;
+  double congruence_tolerance = 1e-11;
   /// The union must not overlap itself: two triangles may penetrate by at most this
   /// times the mean edge length (plus the rigid fit's residual).
   double overlap_tolerance = 1e-9;

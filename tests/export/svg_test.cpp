@@ -147,7 +147,11 @@ TEST(ExportSvg, PresetsChangeColoursAndDashes) {
   laser.preset = StylePreset::Laser;
   const std::string svg = pattern_page_svg(layout, 0, laser);
   EXPECT_NE(layer(svg, "cut").find("stroke=\"#ff0000\""), std::string::npos);
-  EXPECT_NE(layer(svg, "mountain").find("stroke=\"#0000ff\""), std::string::npos);
+  EXPECT_NE(layer(svg, "score").find("stroke=\"#0000ff\""), std::string::npos);
+  // Everything printed is engraved, in its own colour on its own layer: no black text.
+  EXPECT_NE(layer(svg, "engrave").find("<text"), std::string::npos);
+  EXPECT_EQ(svg.find("fill=\"#000000\""), std::string::npos);
+  EXPECT_EQ(layer(svg, "labels"), "<missing>");
   EXPECT_NE(layer(svg, "cut").find("stroke-width=\"0.025\""), std::string::npos);
   EXPECT_EQ(layer(svg, "tabs").find("fill=\"#e6e6e6\""), std::string::npos);
 
@@ -164,6 +168,16 @@ TEST(ExportSvg, PresetsChangeColoursAndDashes) {
     loops += static_cast<int>(piece.cut_outline.size());
   EXPECT_EQ(count(cut, "<path"), static_cast<int>(layout.pages[0].pieces.size()));
   EXPECT_EQ(count(cut, " Z"), loops);
+  // Registration marks where Silhouette looks for them (A4: 210 x 297 mm).
+  const std::string marks = layer(pattern_page_svg(layout, 0, cutter), "regmarks");
+  EXPECT_NE(marks.find("M10,10 L15,10 L15,15 L10,15 Z"), std::string::npos) << marks;
+  EXPECT_NE(marks.find("M200,10 L200,30 L199.7,30 L199.7,10.3 L180,10.3 L180,10 Z"),
+            std::string::npos)
+      << marks;
+  EXPECT_NE(marks.find("M10,287 L30,287 L30,286.7 L10.3,286.7 L10.3,267 L10,267 Z"),
+            std::string::npos)
+      << marks;
+  EXPECT_NE(layer(pattern_page_svg(layout, 0, cutter), "score").find("<path"), std::string::npos);
 
   EXPECT_EQ(style_preset_from_name("Laser"), StylePreset::Laser);
   EXPECT_EQ(style_preset_from_name("cutter"), StylePreset::Cutter);
