@@ -176,9 +176,14 @@ void register_export_files(Registry& registry) {
                }
              }
              if (wants(formats, "pdf")) {
+               const std::vector<GuidePiece> guide = guide_pieces(layout, strips.flat);
                write_via_temporary(dir / "pattern.pdf", [&](const std::filesystem::path& tmp) {
-                 write_pattern_pdf(layout, tmp, page_style);
+                 write_pattern_pdf(layout, tmp, page_style, &guide);
                });
+               if (!layout.pages.empty())
+                 write_via_temporary(dir / "guide.png", [&](const std::filesystem::path& tmp) {
+                   write_guide_png(guide, layout.page, model.name, tmp);
+                 });
              }
            }
            write_file_atomic(dir / "report.json", model_report(model).dump(2) + "\n");

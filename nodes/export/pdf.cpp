@@ -120,7 +120,7 @@ struct ContextDeleter {
 }  // namespace
 
 void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
-                       const StyleOptions& style) {
+                       const StyleOptions& style, const std::vector<GuidePiece>* guide) {
   const double width = layout.page.width_mm * kPointsPerMm;
   const double height = layout.page.height_mm * kPointsPerMm;
   std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
@@ -141,6 +141,10 @@ void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path&
     if (!style.texture_path.empty()) {
       texture.reset(cairo_image_surface_create_from_png(style.texture_path.c_str()));
       if (cairo_surface_status(texture.get()) != CAIRO_STATUS_SUCCESS) texture.reset();
+    }
+    if (guide && !layout.pages.empty()) {
+      draw_guide(cr.get(), *guide, layout.page, style.title, style.font_family);
+      cairo_show_page(cr.get());
     }
     for (int page = 0; page < static_cast<int>(layout.pages.size()); ++page) {
       if (texture) draw_texture(cr.get(), texture.get(), layout.pages[page]);

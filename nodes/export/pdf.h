@@ -5,15 +5,18 @@
 #include <filesystem>
 
 #include "core/pattern.h"
+#include "nodes/export/guide.h"
 #include "nodes/export/pattern_drawing.h"
 
 namespace papercraft {
 
-/// Writes the PDF to `path` (the caller writes to a temporary name and renames). A layout
-/// without pages gives one blank page so the file is still a valid PDF.
+/// Writes the PDF to `path` (the caller writes to a temporary name and renames): with
+/// `guide`, the assembly guide first (guide.h), then every pattern page. A layout without
+/// pages gives one blank page so the file is still a valid PDF.
 /// \throws IOException if the file cannot be written.
 /// Known limit: the strips' texture is not drawn; layers are not PDF optional content.
 void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
-                       const StyleOptions& style = {});
+                       const StyleOptions& style = {},
+                       const std::vector<GuidePiece>* guide = nullptr);
 
 }  // namespace papercraft

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <cstdlib>
 #include <map>
 
@@ -81,7 +83,8 @@ TEST(Pattern, PawnAndFigureEightPatternsAreIsometricAndSeamed) {
       EXPECT_NE(svg.find(layer), std::string::npos) << layer;
     }
     EXPECT_EQ(testing::read_text(out.dir / "pattern.pdf").rfind("%PDF", 0), 0u);
-    // The PDF renders (poppler, as a print shop would) to exactly the pages the layout made.
+    // The PDF renders (poppler, as a print shop would) to the assembly guide and exactly the
+    // pages the layout made.
     const auto render = out.dir / "render";
     ASSERT_EQ(std::system(("pdftoppm -r 8 -png '" + (out.dir / "pattern.pdf").string() + "' '" +
                            render.string() + "'")
@@ -91,7 +94,20 @@ TEST(Pattern, PawnAndFigureEightPatternsAreIsometricAndSeamed) {
     for (const auto& entry : std::filesystem::directory_iterator(out.dir)) {
       rendered += entry.path().filename().string().rfind("render", 0) == 0 ? 1 : 0;
     }
-    EXPECT_EQ(rendered, result.at("pages").get<int>());
+    EXPECT_EQ(rendered, 1 + result.at("pages").get<int>());
+    EXPECT_TRUE(std::filesystem::exists(out.dir / "guide.png"));
+    // pieces.json: numbered 1..N (letters for split strips), every piece on a real page.
+    const auto pieces = nlohmann::json::parse(testing::read_text(out.dir / "pieces.json"));
+    std::set<int> numbers;
+    for (const auto& piece : pieces.at("pieces")) {
+      const std::string name = piece.at("name").get<std::string>();
+      numbers.insert(std::stoi(name));
+      EXPECT_GE(piece.at("page").get<int>(), 1);
+      EXPECT_LE(piece.at("page").get<int>(), result.at("pages").get<int>());
+    }
+    ASSERT_FALSE(numbers.empty());
+    EXPECT_EQ(*numbers.begin(), 1);
+    EXPECT_EQ(*numbers.rbegin(), static_cast<int>(numbers.size())) << "numbers with gaps";
   }
 }
 

@@ -163,7 +163,7 @@ TEST(Texture, UvsReachStripsAndTheTextureIsDrawnInThePdf) {
   ASSERT_FALSE(flaps.empty());
   constexpr double kDpi = 100;
   const auto ppm = dir / "page";
-  ASSERT_EQ(std::system(("pdftoppm -r 100 -f 1 -l 1 -singlefile " +
+  ASSERT_EQ(std::system(("pdftoppm -r 100 -f 2 -l 2 -singlefile " +
                          (dir / "out/tube/pattern.pdf").string() + " " + ppm.string())
                             .c_str()),
             0);
