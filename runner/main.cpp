@@ -56,7 +56,7 @@ std::string batch_json(const std::vector<ModelResult>& results, const std::files
     nlohmann::json row = {{"name", r.name},
                           {"input", r.input.string()},
                           {"status", r.ok ? "ok" : "error"},
-                          {"seconds", r.seconds}};
+                          {"seconds", r.wall_seconds}};
     if (!r.ok) row["error"] = r.error;
     if (r.ok) {
       row["output"] = (out / r.name).string();
@@ -122,7 +122,11 @@ int execute(const RunRequest& request, const CommonOptions& common) {
 
   PipelineOptions options;
   options.threads = settings->threads;
-  options.progress = !common.quiet;
+  if (!common.quiet) {
+    options.on_progress = [](const PipelineProgress& p) {
+      spdlog::info("progress: {}/{} models done, {} running", p.done, p.total, p.running.size());
+    };
+  }
   Pipeline pipeline(std::move(config), registry);
   spdlog::info("{} model(s), tolerance {}, {} thread(s), output {}", request.inputs.size(),
                settings->tolerance.to_string(),
@@ -141,7 +145,7 @@ int execute(const RunRequest& request, const CommonOptions& common) {
                 << " flat strips on " << record.pages << " page(s), "
                 << (record.certified ? "certified" : "UNCERTIFIED") << " error <= "
                 << format_percent(largest > 0 ? 100 * record.hausdorff_bound / largest : 0)
-                << " of the largest side, " << r.seconds << " s -> "
+                << " of the largest side, " << r.wall_seconds << " s -> "
                 << (settings->output_dir / r.name).string() << "/\n";
     } else {
       ++failed;
