@@ -48,7 +48,8 @@ void setup_logging(const CommonOptions& common, ProgressDisplay& display) {
 void list_inputs(const RunRequest& request) {
   for (std::size_t i = 0; i < request.inputs.size(); ++i) {
     std::cout << printable_utf8(request.names[i]) << "\t"
-              << printable_utf8(request.inputs[i].string()) << "\n";
+              << printable_utf8(request.inputs[i].string()) << "\t"
+              << printable_utf8((request.output / request.names[i]).string()) << "\n";
   }
 }
 
@@ -166,7 +167,8 @@ int main_impl(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   bool batch_list = false;
   batch->add_flag("--list", batch_list,
-                  "print the inputs this shard would run (name, tab, file) and exit");
+                  "print the models this shard would run (name, input file, output folder; "
+                  "tab-separated) and exit");
 
   std::filesystem::path summary_dir;
   auto* summary = app.add_subcommand(
