@@ -66,9 +66,9 @@ struct ModelRun {
   void set_input(const MeshSummary& input);
 
   /// Record the first error; later messages of this model are dropped. `internal` marks a
-  /// broken invariant of papercraft itself (a bug) rather than a problem of the input. Bytes
-  /// of the message that are not UTF-8 are escaped (printable_utf8), so that the error
-  /// can go into JSON as it is.
+  /// broken invariant of papercraft itself (a bug) rather than a problem of the input. The
+  /// message is made printable (printable_utf8: bytes that are not UTF-8 and control
+  /// characters escaped), so that it can go into JSON and onto a terminal as it is.
   void fail(const std::string& node, const std::string& message, bool internal = false);
   bool failed() const { return failed_.load(); }
   bool internal_error() const;
@@ -84,8 +84,8 @@ struct ModelRun {
   /// A copy of the record as it stands.
   ModelRecord record() const;
 
-  /// A line for the report's notes (repairs made by the loader, warnings). Bytes that are not
-  /// UTF-8 (a file's text quoted) are escaped, as in error messages.
+  /// A line for the report's notes (repairs made by the loader, warnings), made printable as
+  /// error messages are (a note may quote a file's bytes).
   void note(const std::string& text);
 
   std::vector<NodeStatistics> node_stats;  // index: node index in the pipeline
