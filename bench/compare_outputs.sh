@@ -3,7 +3,8 @@
 # --threads 1` with each, one after the other (old, new, old, new, ... so both see the same
 # machine load), and checks that approximation.obj and strips.json are byte-identical. Prints a
 # row per mesh and tolerance that is not identical (or failed with one binary only), then the
-# counts and the pipeline seconds (batch.json, the fastest of --repeat runs) summed per tolerance
+# counts and the pipeline seconds (the model's wall seconds in run.json, or batch.json of binaries
+# older than run.json; the fastest of --repeat runs) summed per tolerance
 # over the meshes both binaries ran, with the ratio new / old.
 #
 #   bench/compare_outputs.sh OLD_BINARY NEW_BINARY                    # every *.off of libcgal-demo
@@ -86,8 +87,12 @@ run_one() {
       return
     fi
     local s
-    s=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["results"][0]["seconds"])' \
-      "$dir/out/batch.json")
+    # run.json and wall_seconds since batches keep their own summaries; batch.json and seconds before
+    s=$(python3 -c 'import json,os,sys
+d = sys.argv[1]
+f = os.path.join(d, "run.json") if os.path.exists(os.path.join(d, "run.json")) else os.path.join(d, "batch.json")
+r = json.load(open(f))["results"][0]
+print(r["wall_seconds"] if "wall_seconds" in r else r["seconds"])' "$dir/out")
     if [[ -z $best ]] || python3 -c "import sys; sys.exit(0 if $s < $best else 1)"; then best=$s; fi
   done
   echo ok >"$dir/status"

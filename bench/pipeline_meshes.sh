@@ -2,7 +2,7 @@
 # Whole-pipeline benchmark on real meshes: runs `papercraft run MESH --tolerance T --threads N
 # --out DIR -q` for every mesh and tolerance, each under a timeout and /usr/bin/time -v, and
 # prints a markdown table: mesh, faces, tolerance, status, 3D strips, flat strips, pages,
-# certified bound (% of the largest side), pipeline seconds (batch.json), wall seconds, peak RSS
+# certified bound (% of the largest side), pipeline seconds (run.json), wall seconds, peak RSS
 # (MiB); under it, a count per tolerance and the error message of every failed run.
 #
 #   bench/pipeline_meshes.sh                                # every *.off of bench/cgal_meshes.sh
@@ -22,7 +22,7 @@
 #   --budget S            stop starting runs after S seconds in all; the rest are "skipped"
 #   --markdown FILE       also write the table (and the failure list) to FILE
 #   --work DIR            where runs write (default build/pipeline-bench); each run's outputs
-#                         are deleted after reading, except report.json, batch.json, logs
+#                         are deleted after reading, except report.json, run.json, logs
 #   --bin PATH            the papercraft binary (default build/runner/papercraft); it is copied
 #                         into --work first, so a rebuild during the runs does not mix versions
 #   --report ROWS...      only print the table of earlier runs (their --work/rows.tsv files;
@@ -133,7 +133,7 @@ if [[ -n $speedup ]]; then
       out=$dir/t$t-r$r
       timed_run "$out.time" "$out.log" run "${copies_list[@]}" --tolerance "$speedup_tolerance" \
         "${config_args[@]}" --threads "$t" --out "$out" -q
-      printf '%s\t%s\t%s\t%s\t%s\n' "$t" "$r" "$run_rc" "$out.time" "$out/batch.json" >>"$results"
+      printf '%s\t%s\t%s\t%s\t%s\n' "$t" "$r" "$run_rc" "$out.time" "$out/run.json" >>"$results"
       rm -rf "$out"/"${stem}"_*/
     done
   done
@@ -155,7 +155,7 @@ for line in open(results):
     w = wall(tf)
     try:
         batch = json.load(open(bj)); failed = batch["failed"]
-        model_s = sum(row.get("seconds") or 0 for row in batch["results"])
+        model_s = sum(row.get("wall_seconds") or 0 for row in batch["results"])
     except Exception:
         failed, model_s = "?", float("nan")
     rows.append((int(t), int(r), int(rc), w, rss(tf), failed, model_s))
@@ -248,7 +248,7 @@ for entry in "${ordered[@]}"; do
       --out "$out" -q
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$mesh" "$faces" "$tol" "run" "$run_rc" "$out" "$stem" \
       "$timeout_s" >>"$rows"
-    # keep report.json, batch.json and the logs; drop the patterns
+    # keep report.json, run.json and the logs; drop the patterns
     find "$out" -mindepth 2 -type f ! -name report.json -delete 2>/dev/null || true
     printf '%s %-28s %-4s rc=%-3s %6.1fs\n' "$(date +%T)" "$name" "$tol" "$run_rc" \
       "$(grep -oP 'Elapsed \(wall clock\) time.*: \K.*' "$out/time.txt" | awk -F: '{s=0; for (i=1;i<=NF;i++) s=s*60+$i; print s}')" >&2
@@ -305,7 +305,7 @@ for fields in raw.values():
     row["wall"], row["rss"] = wall_and_rss(os.path.join(out, "time.txt"))
     batch = None
     try:
-        batch = json.load(open(os.path.join(out, "batch.json")))
+        batch = json.load(open(os.path.join(out, "run.json")))
     except Exception:
         pass
     report = None
@@ -323,13 +323,13 @@ for fields in raw.values():
         row["status"] = r.get("status", "?")
         row["error"] = r.get("error") or ""
         row["s3"], row["flat"], row["pages"] = r.get("strips_3d"), r.get("flat_strips"), r.get("pages")
-        row["secs"] = r.get("seconds")
+        row["secs"] = r.get("wall_seconds")
         if row["status"] == "ok" and r.get("certified") is False:
             row["status"] = "ok, not certified"
     if rc in (124, 137):
         row["status"] = f"timeout ({run_timeout} s)"
     elif not batch:
-        row["status"] = f"crash (exit {rc})" if rc not in (0, 1, 2) else f"exit {rc}, no batch.json"
+        row["status"] = f"crash (exit {rc})" if rc not in (0, 1, 2) else f"exit {rc}, no run.json"
         row["error"] = last_error_line(os.path.join(out, "log.txt"))
     elif rc not in (0, 1) and row["status"] == "ok":
         row["status"] = f"ok, exit {rc}"
@@ -340,7 +340,7 @@ def fmt(v, spec="{}"):
 
 timeouts = sorted({int(f[7]) if len(f) > 7 else int(timeout_s) for f in raw.values() if f[3] == "run"})
 lines = [f"papercraft run --threads {threads}, timeout {'/'.join(map(str, timeouts)) or timeout_s} s per run "
-         f"({os.cpu_count()} cores). Seconds: the model's pipeline time (batch.json); "
+         f"({os.cpu_count()} cores). Seconds: the model's pipeline time (run.json); "
          "wall: the whole process; RSS: peak resident set.", "",
          "| mesh | faces | tol | status | 3D strips | flat strips | pages | bound % | seconds | wall s | peak RSS MiB |",
          "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|"]

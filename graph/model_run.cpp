@@ -1,5 +1,7 @@
 #include "graph/model_run.h"
 
+#include "core/printable_utf8.h"
+
 namespace papercraft {
 
 ModelRun::ModelRun(int index_in, std::filesystem::path input, std::string name_in,
@@ -35,7 +37,7 @@ PieceLimits ModelRun::piece_limits() const {
 void ModelRun::fail(const std::string& node, const std::string& message, bool internal) {
   std::lock_guard lock(mutex_);
   if (failed_.load()) return;
-  error_ = node.empty() ? message : node + ": " + message;
+  error_ = printable_utf8(node.empty() ? message : node + ": " + message);
   internal_ = internal;
   failed_.store(true);
 }
@@ -43,6 +45,19 @@ void ModelRun::fail(const std::string& node, const std::string& message, bool in
 bool ModelRun::internal_error() const {
   std::lock_guard lock(mutex_);
   return internal_;
+}
+
+void ModelRun::abandon() {
+  std::lock_guard lock(mutex_);
+  if (failed_.load()) return;
+  error_ = "abandoned: the run was stopped while it ran";
+  abandoned_ = true;
+  failed_.store(true);
+}
+
+bool ModelRun::abandoned() const {
+  std::lock_guard lock(mutex_);
+  return abandoned_;
 }
 
 std::string ModelRun::error() const {
@@ -61,7 +76,7 @@ ModelRecord ModelRun::record() const {
 }
 
 void ModelRun::note(const std::string& text) {
-  update([&](ModelRecord& record) { record.notes.push_back(text); });
+  update([&](ModelRecord& record) { record.notes.push_back(printable_utf8(text)); });
 }
 
 }  // namespace papercraft

@@ -66,18 +66,26 @@ struct ModelRun {
   void set_input(const MeshSummary& input);
 
   /// Record the first error; later messages of this model are dropped. `internal` marks a
-  /// broken invariant of papercraft itself (a bug) rather than a problem of the input.
+  /// broken invariant of papercraft itself (a bug) rather than a problem of the input. The
+  /// message is made printable (printable_utf8: bytes that are not UTF-8 and control
+  /// characters escaped), so that it can go into JSON and onto a terminal as it is.
   void fail(const std::string& node, const std::string& message, bool internal = false);
   bool failed() const { return failed_.load(); }
   bool internal_error() const;
   std::string error() const;
+
+  /// Fails the model as abandoned (the run was stopped while it ran), unless it failed
+  /// already. Framework-only.
+  void abandon();
+  bool abandoned() const;
 
   /// Changes the record under the model's lock (nodes of one model run concurrently).
   void update(const std::function<void(ModelRecord&)>& change);
   /// A copy of the record as it stands.
   ModelRecord record() const;
 
-  /// A line for the report's notes (repairs made by the loader, warnings).
+  /// A line for the report's notes (repairs made by the loader, warnings), made printable as
+  /// error messages are (a note may quote a file's bytes).
   void note(const std::string& text);
 
   std::vector<NodeStatistics> node_stats;  // index: node index in the pipeline
@@ -88,6 +96,8 @@ struct ModelRun {
   std::mutex gather_mutex;
   std::map<int, std::vector<std::any>> gathered;
   std::vector<bool> gather_flushed;
+  /// Framework-internal: the node whose call on this model started last (for progress).
+  std::atomic<int> stage{-1};
 
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -99,6 +109,7 @@ struct ModelRun {
   std::atomic<double> mm_per_unit_{0.0};
   std::atomic<bool> failed_{false};
   bool internal_ = false;
+  bool abandoned_ = false;
   std::string error_;
   ModelRecord record_;
 };

@@ -8,10 +8,11 @@
 
 #include <condition_variable>
 #include <set>
-#include <typeinfo>
 #include <thread>
+#include <typeinfo>
 
 #include "core/errors.h"
+#include "core/printable_utf8.h"
 #include "graph/messages.h"
 
 namespace papercraft {
@@ -82,7 +83,7 @@ class Execution {
             std::shared_ptr<const RunSettings> settings, const PipelineOptions& options)
       : config_(config),
         inputs_(inputs),
-        names_(unique_model_names(inputs)),
+        names_(options.names.empty() ? unique_model_names(inputs) : options.names),
         settings_(std::move(settings)),
         options_(options),
         results_(inputs.size()) {
@@ -102,12 +103,17 @@ class Execution {
   }
 
   std::vector<ModelResult> run() {
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+      results_[i].name = names_[i];
+      results_[i].input = inputs_[i];
+      results_[i].error = "not started: the run was stopped";
+    }
     const int threads = options_.threads > 0 ? options_.threads : tbb::info::default_concurrency();
     max_in_flight_ =
         options_.max_models_in_flight > 0 ? options_.max_models_in_flight : 2 * threads;
     tbb::task_arena arena(threads);
     std::thread ticker;
-    if (options_.progress) ticker = std::thread([this] { progress_loop(); });
+    if (options_.on_progress) ticker = std::thread([this] { progress_loop(); });
     arena.execute([&] {
       flow::graph graph;
       build(graph);
@@ -218,7 +224,9 @@ class Execution {
 
   void run_node(int index, const Envelope& in) {
     ModelRun& model = *in.model;
+    if (options_.abandon.stop_requested()) model.abandon();
     if (!model.failed()) {
+      model.stage.store(index);
       const auto start = std::chrono::steady_clock::now();
       const std::string& node = config_.nodes[index].name;
       try {
@@ -264,6 +272,7 @@ class Execution {
   void release(const std::shared_ptr<ModelRun>& model) {
     if (model->in_flight.fetch_sub(1) != 1) return;
     // Nothing of this model is left in the graph: fire the next gather or finish.
+    if (options_.abandon.stop_requested()) model->abandon();
     if (!model->failed()) {
       for (const int g : gather_order_) {
         bool fire = false;
@@ -288,15 +297,21 @@ class Execution {
   }
 
   void start_next() {
+    if (options_.stop_starting.stop_requested()) return;
     const std::size_t index = next_input_.fetch_add(1);
     if (index >= inputs_.size()) return;
     auto model = std::make_shared<ModelRun>(static_cast<int>(index), inputs_[index], names_[index],
                                             settings_, config_.nodes.size());
+    results_[index].started = true;
+    results_[index].queue_seconds =
+        std::chrono::duration<double>(model->started - run_started_).count();
     {
       std::lock_guard lock(active_mutex_);
       active_.insert(model.get());
     }
+    started_.fetch_add(1);
     for (const auto& node : config_.nodes) model->node_labels.emplace_back(node.name, node.impl);
+    if (options_.on_model_started) options_.on_model_started(*model);
     model->in_flight.store(1);
     nodes_[config_.entry]->try_put(
         Envelope{model, std::make_shared<const Job>(Job{inputs_[index]})});
@@ -304,38 +319,48 @@ class Execution {
 
   void finish(const std::shared_ptr<ModelRun>& model) {
     ModelResult& result = results_[model->index];
-    result.name = model->name;
-    result.input = model->input_path;
     result.ok = !model->failed();
+    result.abandoned = model->abandoned();
     result.internal_error = model->internal_error();
     result.error = model->error();
-    result.seconds = model->seconds();
+    result.wall_seconds = model->seconds();
+    for (const NodeStatistics& node : model->node_stats) {
+      result.work_seconds += node.nanoseconds.load() * 1e-9;
+    }
     result.record = model->record();
     if (result.ok) {
-      spdlog::info("{}: done in {:.3f} s", model->name, result.seconds);
-    } else {
-      spdlog::error("{}: {}", model->input_path.string(), result.error);
+      spdlog::debug("{}: done in {:.3f} s", model->name, result.wall_seconds);
+    } else if (!result.abandoned) {
+      spdlog::error("{}: {}", printable_utf8(model->input_path.string()), result.error);
     }
     if (options_.on_model_done) options_.on_model_done(*model, result);
     {
       std::lock_guard lock(active_mutex_);
       active_.erase(model.get());
     }
+    if (!result.ok) failed_.fetch_add(1);
     done_.fetch_add(1);
     start_next();
   }
 
   void progress_loop() {
     std::unique_lock lock(progress_mutex_);
-    while (
-        !progress_cv_.wait_for(lock, std::chrono::seconds(1), [this] { return stop_progress_; })) {
-      long live = 0;
+    while (!progress_cv_.wait_for(lock, options_.progress_interval,
+                                  [this] { return stop_progress_; })) {
+      PipelineProgress progress;
+      progress.total = inputs_.size();
       {
         std::lock_guard active_lock(active_mutex_);
-        for (const ModelRun* m : active_) live += m->in_flight.load();
+        for (const ModelRun* m : active_) {
+          const int stage = m->stage.load();
+          progress.running.push_back(
+              {m->name, stage >= 0 ? config_.nodes[stage].name : "queued", m->in_flight.load()});
+        }
       }
-      spdlog::info("progress: {}/{} models done, {} parts and strips in flight", done_.load(),
-                   inputs_.size(), live);
+      progress.started = started_.load();
+      progress.done = done_.load();
+      progress.failed = failed_.load();
+      options_.on_progress(progress);
     }
   }
 
@@ -357,7 +382,10 @@ class Execution {
 
   std::size_t max_in_flight_ = 1;
   std::atomic<std::size_t> next_input_{0};
+  std::atomic<std::size_t> started_{0};
   std::atomic<std::size_t> done_{0};
+  std::atomic<std::size_t> failed_{0};
+  const std::chrono::steady_clock::time_point run_started_ = std::chrono::steady_clock::now();
   std::mutex active_mutex_;
   std::set<const ModelRun*> active_;
   std::mutex progress_mutex_;
@@ -371,6 +399,10 @@ std::vector<ModelResult> Pipeline::run(const std::vector<std::filesystem::path>&
                                        std::shared_ptr<const RunSettings> settings,
                                        const PipelineOptions& options) {
   if (inputs.empty()) return {};
+  if (!options.names.empty() && options.names.size() != inputs.size()) {
+    throw std::invalid_argument("Pipeline::run: " + std::to_string(options.names.size()) +
+                                " names for " + std::to_string(inputs.size()) + " inputs");
+  }
   Execution execution(config_, registry_, inputs, std::move(settings), options);
   return execution.run();
 }

@@ -8,9 +8,11 @@
 // model, such as merge) fires once with everything collected; when nothing is pending,
 // the model is finished. No worker ever waits for another.
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -29,11 +31,29 @@ struct Job {
 struct ModelResult {
   std::string name;
   std::filesystem::path input;
+  bool started = false;  // false: the run was stopped before this model started
   bool ok = false;
+  bool abandoned = false;       // the run was stopped while it ran; the rest of its work dropped
   bool internal_error = false;  // the error is a bug of papercraft, not of the input
   std::string error;
-  double seconds = 0.0;
+  double work_seconds = 0.0;   // the sum of its node calls
+  double wall_seconds = 0.0;   // from its start to its finish
+  double queue_seconds = 0.0;  // from the start of the run to its start
   ModelRecord record;
+};
+
+/// What the graph holds at one moment, for a progress display.
+struct PipelineProgress {
+  struct Running {
+    std::string name;
+    std::string stage;   // the node whose call on this model started last
+    long in_flight = 0;  // its parts and strips in the graph
+  };
+  std::size_t total = 0;
+  std::size_t started = 0;
+  std::size_t done = 0;
+  std::size_t failed = 0;
+  std::vector<Running> running;
 };
 
 struct NodeTiming {
@@ -46,9 +66,21 @@ struct NodeTiming {
 struct PipelineOptions {
   int threads = 0;               // 0: all cores
   int max_models_in_flight = 0;  // 0: 2 x threads
-  bool progress = false;         // a progress line on stderr about once a second
-  /// Called when a model finishes (from a worker thread; keep it short).
+  /// Output folder names, one per input; empty: unique_model_names(inputs). A caller running
+  /// a share of a larger list passes the names it has in the whole list.
+  std::vector<std::string> names;
+  /// Called every progress_interval from a thread of the pipeline's own.
+  std::function<void(const PipelineProgress&)> on_progress;
+  std::chrono::milliseconds progress_interval{1000};
+  /// Called when a model enters the graph and when it finishes (from a worker thread: hand
+  /// the work to another thread rather than blocking it).
+  std::function<void(const ModelRun&)> on_model_started;
   std::function<void(const ModelRun&, const ModelResult&)> on_model_done;
+  /// Once requested, no further model starts (their results have started == false).
+  std::stop_token stop_starting;
+  /// Once requested, models still running are abandoned: a node call under way finishes, the
+  /// rest of their messages are dropped, their results have abandoned == true.
+  std::stop_token abandon;
 };
 
 class Pipeline {
@@ -57,7 +89,8 @@ class Pipeline {
   ~Pipeline();
 
   /// Runs every input through the graph; returns one result per input, in input order.
-  /// Never throws for a bad model: its error is in its result.
+  /// Never throws for a bad model: its error is in its result. Throws std::invalid_argument
+  /// when options.names is neither empty nor one name per input.
   std::vector<ModelResult> run(const std::vector<std::filesystem::path>& inputs,
                                std::shared_ptr<const RunSettings> settings,
                                const PipelineOptions& options = {});

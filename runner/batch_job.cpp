@@ -27,13 +27,34 @@ std::vector<std::filesystem::path> expand_pattern(const std::string& pattern) {
   return out;
 }
 
-std::vector<std::filesystem::path> select_shard(const std::vector<std::filesystem::path>& inputs,
-                                                int shard_index, int shard_count) {
-  std::vector<std::filesystem::path> out;
-  for (std::size_t i = 0; i < inputs.size(); ++i) {
-    if (static_cast<int>(i % shard_count) == shard_index) out.push_back(inputs[i]);
+std::vector<std::size_t> shard_indices(std::size_t input_count, int shard_index, int shard_count) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = static_cast<std::size_t>(shard_index); i < input_count;
+       i += static_cast<std::size_t>(shard_count)) {
+    out.push_back(i);
   }
   return out;
+}
+
+Shard parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  const auto whole_number = [](const std::string& part) {
+    if (part.empty() || part.size() > 9 ||
+        part.find_first_not_of("0123456789") != std::string::npos) {
+      throw std::invalid_argument("");
+    }
+    return std::stoi(part);
+  };
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument("");
+    const int index = whole_number(text.substr(0, slash));
+    const int count = whole_number(text.substr(slash + 1));
+    if (count < 1 || index < 1 || index > count) throw std::invalid_argument("");
+    return {index - 1, count};
+  } catch (const std::logic_error&) {
+    throw std::invalid_argument("expected a shard like 1/4 (the first of four), got '" + text +
+                                "'");
+  }
 }
 
 namespace {
@@ -136,17 +157,13 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
   if (root["min_width_mm"]) job.min_width_mm = number("min_width_mm", 0);
   if (root["min_area_mm2"]) job.min_area_mm2 = number("min_area_mm2", 0);
   if (root["shard"]) {
-    const std::string shard = scalar(path, root["shard"], "a shard like 1/4");
-    const auto slash = shard.find('/');
+    const std::string text = scalar(path, root["shard"], "a shard like 1/4");
     try {
-      if (slash == std::string::npos) throw std::invalid_argument("");
-      const int index = std::stoi(shard.substr(0, slash));
-      const int count = std::stoi(shard.substr(slash + 1));
-      if (count < 1 || index < 1 || index > count) throw std::invalid_argument("");
-      job.shard_index = index - 1;
-      job.shard_count = count;
-    } catch (const std::logic_error&) {
-      fail(path, root["shard"], "expected a shard like 1/4 (the first of four machines)");
+      const Shard shard = parse_shard(text);
+      job.shard_index = shard.index;
+      job.shard_count = shard.count;
+    } catch (const std::invalid_argument& e) {
+      fail(path, root["shard"], e.what());
     }
   }
   return job;

@@ -9,8 +9,8 @@
 //   height_mm: 150                            # optional
 //   min_width_mm: 5                           # optional
 //   min_area_mm2: 100                         # optional
-//   shard: 1/4                                # optional: this machine runs every 4th input from
-//   the 1st
+//   shard: 1/4                                # optional: this machine runs every 4th input,
+//                                             # from the 1st
 
 #include <filesystem>
 #include <optional>
@@ -41,8 +41,16 @@ BatchJob load_batch_job(const std::filesystem::path& path);
 /// Expands a path or a glob pattern (`*`, `?`, `[...]`) into sorted existing paths.
 std::vector<std::filesystem::path> expand_pattern(const std::string& pattern);
 
-/// Keeps every shard_count-th input starting at shard_index (stable across machines).
-std::vector<std::filesystem::path> select_shard(const std::vector<std::filesystem::path>& inputs,
-                                                int shard_index, int shard_count);
+/// The indices of the inputs shard `shard_index` (0-based) of `shard_count` runs: every
+/// shard_count-th from shard_index, so the split is the same on every machine.
+std::vector<std::size_t> shard_indices(std::size_t input_count, int shard_index, int shard_count);
+
+struct Shard {
+  int index = 0;  // 0-based
+  int count = 1;
+};
+
+/// "2/4" (the second of four) -> {1, 4}. Throws std::invalid_argument unless 1 <= I <= N.
+Shard parse_shard(const std::string& text);
 
 }  // namespace papercraft

@@ -16,27 +16,27 @@
 #include "core/errors.h"
 #include "core/generate.h"
 #include "core/mesh.h"
+#include "core/printable_utf8.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
 #include "runner/batch_job.h"
+#include "runner/progress_display.h"
+#include "runner/run_models.h"
+#include "runner/stop_signals.h"
+#include "runner/summary_command.h"
 
 namespace papercraft {
 namespace {
-
-// Exit codes (README "Exit codes").
-constexpr int kExitOk = 0;
-constexpr int kExitModelFailed = 1;
-constexpr int kExitUsage = 2;
-constexpr int kExitInternal = 3;
 
 struct CommonOptions {
   bool verbose = false;
   bool quiet = false;
 };
 
-void setup_logging(const CommonOptions& common) {
-  auto logger = spdlog::stderr_color_mt("papercraft");
+void setup_logging(const CommonOptions& common, ProgressDisplay& display) {
+  auto sink = display.wrap(std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
+  auto logger = std::make_shared<spdlog::logger>("papercraft", sink);
   logger->set_pattern("%^[%l]%$ %v");
   spdlog::set_default_logger(logger);
   spdlog::set_level(common.verbose ? spdlog::level::debug
@@ -44,120 +44,13 @@ void setup_logging(const CommonOptions& common) {
                                    : spdlog::level::info);
 }
 
-std::string format_percent(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g%%", value);
-  return buffer;
-}
-
-std::string batch_json(const std::vector<ModelResult>& results, const std::filesystem::path& out) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (const auto& r : results) {
-    nlohmann::json row = {{"name", r.name},
-                          {"input", r.input.string()},
-                          {"status", r.ok ? "ok" : "error"},
-                          {"seconds", r.seconds}};
-    if (!r.ok) row["error"] = r.error;
-    if (r.ok) {
-      row["output"] = (out / r.name).string();
-      row["strips_3d"] = r.record.strips_3d;
-      row["flat_strips"] = r.record.flat_strips;
-      row["pages"] = r.record.pages;
-      row["hausdorff_bound"] = r.record.hausdorff_bound;
-      row["certified"] = r.record.certified;
-    }
-    rows.push_back(std::move(row));
+// `batch JOB --list`: the inputs this shard runs and their output folders.
+void list_inputs(const RunRequest& request) {
+  for (std::size_t i = 0; i < request.inputs.size(); ++i) {
+    std::cout << printable_utf8(request.names[i]) << "\t"
+              << printable_utf8(request.inputs[i].string()) << "\t"
+              << printable_utf8((request.output / request.names[i]).string()) << "\n";
   }
-  long failed = 0;
-  for (const auto& r : results) failed += r.ok ? 0 : 1;
-  nlohmann::json root = {{"version", PAPERCRAFT_VERSION},
-                         {"models", results.size()},
-                         {"failed", failed},
-                         {"results", rows}};
-  return root.dump(2) + "\n";
-}
-
-struct RunRequest {
-  std::vector<std::filesystem::path> inputs;
-  std::string config_file;  // empty: builtin default
-  std::string tolerance;    // empty: from the config
-  std::filesystem::path output = "out";
-  int threads = -1;  // -1: from the config
-  // Paper: each set only when given (command line or job file); else the config's, else the
-  // defaults of PaperSpec.
-  std::optional<double> height_mm, scale, min_width_mm, min_area_mm2;
-};
-
-int execute(const RunRequest& request, const CommonOptions& common) {
-  const Registry& registry = builtin_registry();
-  PipelineConfig config =
-      request.config_file.empty()
-          ? parse_pipeline_config(default_config_text(), "<builtin default.yaml>", registry)
-          : load_pipeline_config(request.config_file, registry);
-  auto settings = std::make_shared<RunSettings>();
-  settings->tolerance = config.tolerance.value_or(ToleranceSpec{});
-  if (!request.tolerance.empty()) {
-    try {
-      settings->tolerance = parse_tolerance(request.tolerance);
-    } catch (const std::invalid_argument& e) {
-      throw InvalidInputException(std::string("--tolerance: ") + e.what());
-    }
-  }
-  settings->output_dir = request.output;
-  settings->threads = request.threads >= 0 ? request.threads : config.threads.value_or(0);
-  settings->config_file = config.file;
-  settings->config_text = config.text;
-  PaperSpec& paper = settings->paper;
-  if (config.height_mm) paper.height_mm = *config.height_mm;
-  if (config.scale) paper.scale = *config.scale;
-  if (config.min_width_mm) paper.min_width_mm = *config.min_width_mm;
-  if (config.min_area_mm2) paper.min_area_mm2 = *config.min_area_mm2;
-  if (request.height_mm) {
-    paper.height_mm = *request.height_mm;
-    paper.scale = 0.0;  // a height on the command line wins over a scale in the config
-  }
-  if (request.scale) paper.scale = *request.scale;
-  if (request.min_width_mm) paper.min_width_mm = *request.min_width_mm;
-  if (request.min_area_mm2) paper.min_area_mm2 = *request.min_area_mm2;
-
-  PipelineOptions options;
-  options.threads = settings->threads;
-  options.progress = !common.quiet;
-  Pipeline pipeline(std::move(config), registry);
-  spdlog::info("{} model(s), tolerance {}, {} thread(s), output {}", request.inputs.size(),
-               settings->tolerance.to_string(),
-               settings->threads == 0 ? std::string("all") : std::to_string(settings->threads),
-               settings->output_dir.string());
-  const auto results = pipeline.run(request.inputs, settings, options);
-  write_file_atomic(settings->output_dir / "batch.json", batch_json(results, settings->output_dir));
-
-  int failed = 0;
-  bool internal = false;
-  for (const auto& r : results) {
-    if (r.ok) {
-      const ModelRecord& record = r.record;
-      const double largest = record.input.largest_side;
-      std::cout << r.name << ": ok, " << record.strips_3d << " strips -> " << record.flat_strips
-                << " flat strips on " << record.pages << " page(s), "
-                << (record.certified ? "certified" : "UNCERTIFIED") << " error <= "
-                << format_percent(largest > 0 ? 100 * record.hausdorff_bound / largest : 0)
-                << " of the largest side, " << r.seconds << " s -> "
-                << (settings->output_dir / r.name).string() << "/\n";
-    } else {
-      ++failed;
-      internal = internal || r.internal_error;
-      std::cout << r.name << ": ERROR " << r.error << "\n";
-    }
-  }
-  std::cout << results.size() - failed << " passed, " << failed << " failed; summary in "
-            << (settings->output_dir / "batch.json").string() << "\n";
-  if (internal) {
-    spdlog::critical(
-        "internal error: a model failed on a bug of papercraft (see above); please "
-        "report it");
-    return kExitInternal;
-  }
-  return failed > 0 ? kExitModelFailed : kExitOk;
 }
 
 void print_nodes(const Registry& registry) {
@@ -231,6 +124,10 @@ int main_impl(int argc, char** argv) {
   run->add_option("-o,--out", run_request.output, "output folder (default: out)");
   run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
       ->check(CLI::NonNegativeNumber);
+  run->add_option("--grace", run_request.grace_seconds,
+                  "after SIGINT/SIGTERM, seconds the running models may take to finish before "
+                  "they are abandoned (default 10)")
+      ->check(CLI::NonNegativeNumber);
   std::string height_text;
   auto* height = run->add_option("--height", height_text,
                                  "size of the model's largest side on paper: 200, 200mm, 20cm, "
@@ -253,7 +150,31 @@ int main_impl(int argc, char** argv) {
   auto* batch = app.add_subcommand("batch", "run a batch job file (YAML: inputs, output, ...)");
   batch->add_option("job", job_file, "job YAML")->required();
   int batch_threads = -1;
-  batch->add_option("-j,--threads", batch_threads, "override the job's thread count");
+  batch->add_option("-j,--threads", batch_threads, "override the job's thread count")
+      ->check(CLI::NonNegativeNumber);
+  std::string batch_shard;
+  batch->add_option("--shard", batch_shard,
+                    "run shard I of N (like 2/4: inputs 2, 6, 10, ...); overrides the job's");
+  bool batch_force = false;
+  batch->add_flag("--force", batch_force,
+                  "run every model again, also those an earlier run finished with the same "
+                  "input and settings");
+  double batch_grace = 10.0;
+  batch
+      ->add_option("--grace", batch_grace,
+                   "after SIGINT/SIGTERM, seconds the running models may take to finish "
+                   "before they are abandoned (default 10)")
+      ->check(CLI::NonNegativeNumber);
+  bool batch_list = false;
+  batch->add_flag("--list", batch_list,
+                  "print the models this shard would run (name, input file, output folder; "
+                  "tab-separated) and exit");
+
+  std::filesystem::path summary_dir;
+  auto* summary = app.add_subcommand(
+      "summary", "merge the batch, shard and run summaries of an output folder into batch.json");
+  summary->add_option("out", summary_dir, "the output folder, or a job file (its output)")
+      ->required();
 
   auto* nodes = app.add_subcommand("nodes", "list node implementations, ports and parameters");
 
@@ -276,7 +197,11 @@ int main_impl(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   }
-  setup_logging(common);
+  // Before any thread exists: SIGINT/SIGTERM are then taken by run_models' own thread.
+  if (*run || *batch) block_stop_signals();
+  ProgressDisplay display(
+      {.enabled = !common.quiet && !batch_list, .terminal = ::isatty(STDERR_FILENO) == 1});
+  setup_logging(common, display);
   omlog().disable();  // OpenMesh's chatter ("[OBJWriter] : write file"); errors come as ours
   omout().disable();
 
@@ -299,12 +224,29 @@ int main_impl(int argc, char** argv) {
         }
       }
       if (*min_area_option) run_request.min_area_mm2 = min_area;
-      return execute(run_request, common);
+      run_request.names = unique_model_names(run_request.inputs);
+      return run_models(run_request, display);
     }
     if (*batch) {
       const BatchJob job = load_batch_job(job_file);
+      Shard shard{job.shard_index, job.shard_count};
+      if (!batch_shard.empty()) {
+        try {
+          shard = parse_shard(batch_shard);
+        } catch (const std::invalid_argument& e) {
+          throw InvalidInputException(std::string("--shard: ") + e.what());
+        }
+      }
       RunRequest request;
-      request.inputs = select_shard(job.inputs, job.shard_index, job.shard_count);
+      request.kind = RunRequest::Kind::kBatch;
+      // Names over the whole job, so that shards never share an output folder.
+      const std::vector<std::string> names = unique_model_names(job.inputs);
+      for (const std::size_t i : shard_indices(job.inputs.size(), shard.index, shard.count)) {
+        request.inputs.push_back(job.inputs[i]);
+        request.names.push_back(names[i]);
+      }
+      request.shard_index = shard.index;
+      request.shard_count = shard.count;
       if (job.config) request.config_file = job.config->string();
       if (job.tolerance) request.tolerance = job.tolerance->to_string();
       request.output = job.output;
@@ -312,11 +254,23 @@ int main_impl(int argc, char** argv) {
       request.height_mm = job.height_mm;
       request.min_width_mm = job.min_width_mm;
       request.min_area_mm2 = job.min_area_mm2;
-      if (job.shard_count > 1) {
-        spdlog::info("shard {}/{}: {} of {} inputs", job.shard_index + 1, job.shard_count,
+      request.force = batch_force;
+      request.grace_seconds = batch_grace;
+      if (batch_list) {
+        list_inputs(request);
+        return kExitOk;
+      }
+      if (shard.count > 1) {
+        spdlog::info("shard {}/{}: {} of {} inputs", shard.index + 1, shard.count,
                      request.inputs.size(), job.inputs.size());
       }
-      return execute(request, common);
+      return run_models(request, display);
+    }
+    if (*summary) {
+      const std::string extension = summary_dir.extension().string();
+      const bool job = std::filesystem::is_regular_file(summary_dir) &&
+                       (extension == ".yaml" || extension == ".yml");
+      return summary_command(job ? load_batch_job(summary_dir).output : summary_dir);
     }
     if (*nodes) {
       print_nodes(builtin_registry());
@@ -351,16 +305,16 @@ int main_impl(int argc, char** argv) {
       return generate(shape, shape_out, shape_params);
     }
   } catch (const ConfigException& e) {
-    spdlog::error("{}", e.what());
+    spdlog::error("{}", printable_utf8(e.what()));
     return kExitUsage;
   } catch (const InvalidInputException& e) {
-    spdlog::error("{}", e.what());
+    spdlog::error("{}", printable_utf8(e.what()));
     return kExitUsage;
   } catch (const IOException& e) {
-    spdlog::error("{}", e.what());
+    spdlog::error("{}", printable_utf8(e.what()));
     return kExitUsage;
   } catch (const std::exception& e) {
-    spdlog::critical("internal error: {}", e.what());
+    spdlog::critical("internal error: {}", printable_utf8(e.what()));
     return kExitInternal;
   }
   return kExitUsage;

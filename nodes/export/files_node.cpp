@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "core/printable_utf8.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
@@ -40,7 +41,9 @@ nlohmann::json model_report(const ModelRun& model) {
   const ModelRecord record = model.record();
   nlohmann::json report;
   report["version"] = PAPERCRAFT_VERSION;
-  nlohmann::json input = {{"path", model.input_path.string()}, {"name", model.name}};
+  // A file's name may be any bytes; JSON takes UTF-8 only.
+  nlohmann::json input = {{"path", printable_utf8(model.input_path.string())},
+                          {"name", printable_utf8(model.name)}};
   if (record.loaded) {
     const MeshSummary& s = record.input;
     input["vertices"] = s.vertices;
@@ -97,7 +100,8 @@ nlohmann::json model_report(const ModelRun& model) {
   }
   report["timing"] = {{"total_seconds", model.seconds()}, {"nodes", nodes}};
   report["threads"] = model.settings->threads;
-  report["config"] = {{"file", model.settings->config_file}, {"text", model.settings->config_text}};
+  report["config"] = {{"file", printable_utf8(model.settings->config_file)},
+                      {"text", printable_utf8(model.settings->config_text)}};
   report["notes"] = record.notes;
   return report;
 }
@@ -155,7 +159,7 @@ void register_export_files(Registry& registry) {
            if (pattern.layout) {
              const PatternLayout& layout = *pattern.layout;
              StyleOptions page_style = style;
-             page_style.title = model.name;
+             page_style.title = printable_utf8(model.name);  // cairo and SVG: UTF-8
              if (strips.model && !strips.model->texture_path.empty()) {
                if (std::filesystem::path(strips.model->texture_path).extension() == ".png") {
                  page_style.texture_path = strips.model->texture_path;

@@ -2,33 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "support/command.h"
 #include "support/pipeline_run.h"
 
 namespace papercraft {
 namespace {
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CommandResult run_command(const std::string& arguments) {
-  const std::string command = std::string(PAPERCRAFT_BINARY) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    result.output.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing::run_command;
 
 const std::string kSource = PAPERCRAFT_SOURCE_DIR;
 
@@ -134,9 +116,19 @@ TEST(Cli, BatchShardsSplitTheInputs) {
   std::ofstream(dir / "job.yaml") << "inputs: ['*.obj']\noutput: out\nshard: 2/2\n";
   const auto r = run_command("batch " + (dir / "job.yaml").string());
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  const auto batch = nlohmann::json::parse(testing::read_text(dir / "out/batch.json"));
+  const auto batch = nlohmann::json::parse(testing::read_text(dir / "out/batch.shard-2-of-2.json"));
   ASSERT_EQ(batch.at("models").get<int>(), 1);
+  EXPECT_EQ(batch.at("shard"), "2/2");
   EXPECT_EQ(batch.at("results")[0].at("name"), "b");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/batch.json")) << "a shard's own file only";
+  // --shard on the command line wins over the job's; --list names what the shard would run.
+  const auto list = run_command("batch " + (dir / "job.yaml").string() + " --shard 1/3 --list");
+  EXPECT_EQ(list.exit_code, 0) << list.output;
+  EXPECT_NE(list.output.find("a\t"), std::string::npos) << list.output;
+  EXPECT_EQ(list.output.find("b\t"), std::string::npos) << list.output;
+  const auto bad = run_command("batch " + (dir / "job.yaml").string() + " --shard 4/3");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--shard: expected a shard like 1/4"), std::string::npos) << bad.output;
 }
 
 TEST(Cli, BadJobFileAndBadToleranceExit2) {

@@ -4,10 +4,12 @@
 // no fields for test items.
 
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "graph/pipeline.h"
 #include "graph/registry.h"
@@ -164,6 +166,16 @@ inline Registry test_registry() {
                       tally.add(model, "sum", in.get<Summary>().sum);
                     });
                   }));
+  r.add(test_spec("test.sleep", "passes each item on after `milliseconds`", MessageType::of<Item>(),
+                  {{"out", MessageType::of<Item>()}},
+                  [](const Params& p) {
+                    const long milliseconds = p.integer("milliseconds");
+                    return make_body([milliseconds](const Envelope& in, Emitter& out) {
+                      std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
+                      out.emit("out", Item{in.get<Item>().value});
+                    });
+                  },
+                  {{"milliseconds", ParamType::Integer, "10", "how long each item takes"}}));
   r.add(test_spec("test.item_sink", "tallies item values", MessageType::of<Item>(), {},
                   [](const Params&) {
                     return make_body([](const Envelope& in, Emitter&) {

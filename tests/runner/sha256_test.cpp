@@ -1,0 +1,32 @@
+#include "runner/sha256.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/temp_dir.h"
+
+namespace papercraft {
+namespace {
+
+// FIPS 180-4 examples and the NIST one-million-'a' vector.
+TEST(Sha256, KnownVectors) {
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(Sha256, FileEqualsText) {
+  const auto dir = testing::fresh_temp_dir("sha256");
+  std::string text;
+  for (int i = 0; i < 100000; ++i) text += static_cast<char>(i * 7919 % 251);  // > one block
+  std::ofstream(dir / "f.bin", std::ios::binary) << text;
+  EXPECT_EQ(file_sha256_hex(dir / "f.bin"), sha256_hex(text));
+  EXPECT_THROW(file_sha256_hex(dir / "missing.bin"), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace papercraft
