@@ -120,7 +120,7 @@ struct NodeSpec {
   /// For a stage of the refinement: writes this node's parameters into the engine's options
   /// (applied in config order to build NodeContext::refine).
   std::function<void(const Params&, RefineOptions&)> refinement = {};
-  std::function<std::unique_ptr<NodeBody>(const Params&, const NodeContext&)> create;
+  std::function<std::unique_ptr<NodeBody>(const Params&, const NodeContext&)> create = {};
 
   std::string stage() const { return name.substr(0, name.find('.')); }
 };

@@ -52,7 +52,9 @@ void expect_exact_seams(const testing::PipelineOutput& out) {
       for (const auto& e : sides[k].at("edges")) {
         const auto& edge = boundary.at(e.get<int>());
         EXPECT_EQ(edge.at("label").get<std::string>(), label);
-        if (previous_end >= 0) EXPECT_EQ(edge.at("v0").get<int>(), previous_end) << label;
+        if (previous_end >= 0) {
+          EXPECT_EQ(edge.at("v0").get<int>(), previous_end) << label;
+        }
         previous_end = edge.at("v1").get<int>();
         // Its partner lies on the other side.
         const int partner = edge.at("partner_edge").get<int>();
@@ -68,7 +70,9 @@ void expect_exact_seams(const testing::PipelineOutput& out) {
   // Every labelled edge belongs to a listed seam.
   for (const auto& s : strips)
     for (const auto& edge : s.at("boundary"))
-      if (edge.at("kind") == "seam") EXPECT_TRUE(listed.count(edge.at("label").get<std::string>()));
+      if (edge.at("kind") == "seam") {
+        EXPECT_TRUE(listed.count(edge.at("label").get<std::string>()));
+      }
 }
 
 double flat_area_mm2(const nlohmann::json& strip, double scale) {
