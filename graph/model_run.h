@@ -45,7 +45,14 @@ struct ModelRun {
   const std::shared_ptr<const RunSettings> settings;
   const std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 
-  std::filesystem::path output_dir() const { return settings->output_dir / name; }
+  /// Where the model's files are written while it runs: <out>/.<name>.partial. When the
+  /// model succeeds the framework swaps it for <out>/<name> (final_dir) whole, so no file of
+  /// an earlier run survives next to the new ones; when it fails the folder is removed and
+  /// an earlier result stays as it was.
+  std::filesystem::path output_dir() const {
+    return settings->output_dir / ("." + name + ".partial");
+  }
+  std::filesystem::path final_dir() const { return settings->output_dir / name; }
 
   /// The absolute tolerance (model units), fixed by the framework when the loader emits the
   /// model (set_input); 0 before.

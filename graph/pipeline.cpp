@@ -1,10 +1,13 @@
 #include "graph/pipeline.h"
 
+#include <unistd.h>
+
 #include <spdlog/spdlog.h>
 #include <tbb/flow_graph.h>
 #include <tbb/global_control.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
+#include <unistd.h>
 
 #include <condition_variable>
 #include <set>
@@ -313,11 +316,49 @@ class Execution {
     for (const auto& node : config_.nodes) model->node_labels.emplace_back(node.name, node.impl);
     if (options_.on_model_started) options_.on_model_started(*model);
     model->in_flight.store(1);
+    {
+      std::error_code ec;  // the staging folder of a run that was killed
+      std::filesystem::remove_all(model->output_dir(), ec);
+    }
     nodes_[config_.entry]->try_put(
         Envelope{model, std::make_shared<const Job>(Job{inputs_[index]})});
   }
 
+  // The staging folder becomes the model's folder whole (success) or goes away (failure).
+  static void publish(ModelRun& model) {
+    const std::filesystem::path staging = model.output_dir(), final_dir = model.final_dir();
+    std::error_code ec;
+    if (model.failed() || model.abandoned()) {
+      std::filesystem::remove_all(staging, ec);
+      return;
+    }
+    if (!std::filesystem::exists(staging, ec)) return;  // a pipeline that writes nothing
+    std::filesystem::path old;
+    if (std::filesystem::exists(final_dir, ec)) {
+      old = model.settings->output_dir / ("." + model.name + ".old-" + std::to_string(::getpid()));
+      std::filesystem::remove_all(old, ec);
+      std::filesystem::rename(final_dir, old, ec);
+      if (ec) {
+        model.fail("export", "cannot replace " + printable_utf8(final_dir.string()) + ": " +
+                                 ec.message());
+        std::filesystem::remove_all(staging, ec);
+        return;
+      }
+    }
+    std::filesystem::rename(staging, final_dir, ec);
+    if (ec) {
+      model.fail("export", "cannot move the results into " + printable_utf8(final_dir.string()) +
+                               ": " + ec.message());
+      std::error_code ignored;
+      if (!old.empty()) std::filesystem::rename(old, final_dir, ignored);
+      std::filesystem::remove_all(staging, ignored);
+      return;
+    }
+    if (!old.empty()) std::filesystem::remove_all(old, ec);
+  }
+
   void finish(const std::shared_ptr<ModelRun>& model) {
+    publish(*model);
     ModelResult& result = results_[model->index];
     result.ok = !model->failed();
     result.abandoned = model->abandoned();

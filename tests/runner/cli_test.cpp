@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "support/command.h"
@@ -148,11 +150,10 @@ TEST(Cli, HeightTakesUnits) {
   ASSERT_EQ(run_command("generate open_cylinder " + mesh.string()).exit_code, 0);
   auto mm_per_unit = [&](const std::string& height) {
     const auto out = dir / height;
-    const auto r = run_command("run " + mesh.string() + " -q --height " + height + " --out " +
-                               out.string());
+    const auto r =
+        run_command("run " + mesh.string() + " -q --height " + height + " --out " + out.string());
     EXPECT_EQ(r.exit_code, 0) << height << "\n" << r.output;
-    const auto report =
-        nlohmann::json::parse(testing::read_text(out / "cylinder" / "report.json"));
+    const auto report = nlohmann::json::parse(testing::read_text(out / "cylinder" / "report.json"));
     return report.at("result").at("mm_per_unit").get<double>();
   };
   const double mm = mm_per_unit("150");
@@ -164,6 +165,45 @@ TEST(Cli, HeightTakesUnits) {
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.output.find("--height: expected a positive length"), std::string::npos)
       << bad.output;
+}
+
+// A model's folder is replaced whole: a rerun that makes fewer pages leaves no page of the
+// earlier run, and a failed rerun leaves the earlier result untouched and no staging folder.
+TEST(Cli, RerunReplacesTheModelsFolderWhole) {
+  const auto dir = testing::fresh_temp_dir("rerun");
+  const auto mesh = dir / "cylinder.obj";
+  ASSERT_EQ(run_command("generate open_cylinder " + mesh.string()).exit_code, 0);
+  const auto out = dir / "out";
+  auto svg_pages = [&] {
+    int pages = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(out / "cylinder"))
+      pages += entry.path().extension() == ".svg" ? 1 : 0;
+    return pages;
+  };
+  ASSERT_EQ(
+      run_command("run " + mesh.string() + " -q --height 900 --out " + out.string()).exit_code, 0);
+  const int big = svg_pages();
+  ASSERT_GT(big, 1);
+  std::ofstream(out / "cylinder" / "stale.txt") << "from an earlier run";
+  ASSERT_EQ(
+      run_command("run " + mesh.string() + " -q --height 100 --out " + out.string()).exit_code, 0);
+  EXPECT_EQ(svg_pages(), 1);
+  EXPECT_FALSE(std::filesystem::exists(out / "cylinder" / "stale.txt"));
+  // A run that fails (a sphere of the same name that may not be cut twice) keeps the last
+  // result.
+  std::filesystem::create_directories(dir / "other");
+  const auto sphere = dir / "other" / "cylinder.obj";
+  ASSERT_EQ(run_command("generate sphere " + sphere.string()).exit_code, 0);
+  std::string config = testing::read_text(kSource + "/configs/default.yaml");
+  const std::string cut = "impl: cut.harmonic,";
+  config.replace(config.find(cut), cut.size(), cut + " params: {max_depth: 1},");
+  std::ofstream(dir / "strict.yaml") << config;
+  const auto failed = run_command("run " + sphere.string() + " -q --tolerance 0.1% --out " +
+                                  out.string() + " -c " + (dir / "strict.yaml").string());
+  EXPECT_NE(failed.exit_code, 0);
+  EXPECT_EQ(svg_pages(), 1);
+  for (const auto& entry : std::filesystem::directory_iterator(out))
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
 }
 
 TEST(Cli, MissingFileIsAnErrorRow) {
