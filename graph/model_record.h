@@ -45,6 +45,7 @@ struct ModelRecord {
   /// layout: the pages.
   int pages = 0;
   int shelf_pages = 0;
+  int rectangle_pages = 0;  // what the rectangle packer needs for the same pieces
   std::vector<double> page_fill;  // per page: pieces and tabs over the printable area
   int seams = 0;
   int seams_without_tab = 0;

@@ -85,6 +85,7 @@ nlohmann::json model_report(const ModelRun& model) {
   if (record.page_fill.size() > 1)
     fill_but_last /= static_cast<double>(record.page_fill.size() - 1);
   report["layout"] = {{"pages", record.pages},
+                      {"rectangle_pages", record.rectangle_pages},
                       {"page_fill", record.page_fill},
                       {"mean_fill_but_last", fill_but_last},
                       {"seams", record.seams},

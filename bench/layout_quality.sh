@@ -1,0 +1,101 @@
+#!/usr/bin/env bash
+# The pages a maker prints, over every libcgal-demo mesh (or the given meshes) at one tolerance
+# and height: each mesh is laid out twice, with layout.pages (nesting by outlines) and with
+# layout.rectangles (MaxRects, the packer before), everything else the same. Prints per mesh
+# the pages of each, the mean fill of every page but the last, seams without a tab, the
+# smallest text and the overlapping texts (report.json "layout"), the layout node's seconds;
+# then the totals and the five meshes whose page count fell the most.
+#
+#   bench/layout_quality.sh                               # all meshes, 2%, 200 mm
+#   bench/layout_quality.sh --tolerance 5% a.off b.off
+#
+# Options: --tolerance T (2%), --height MM (200), --threads N (2), --max-faces N (30000),
+#          --timeout S (300), --work DIR (build/layout-quality), --bin PATH
+# Exit status 0 (findings are data); 2 for a bad command line.
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+tolerance=2%
+height=200
+threads=2
+max_faces=30000
+timeout_s=300
+work=$root/build/layout-quality
+bin=$root/build/runner/papercraft
+declare -a meshes=()
+
+usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --tolerance) tolerance=$2; shift 2 ;;
+    --height) height=$2; shift 2 ;;
+    --threads) threads=$2; shift 2 ;;
+    --max-faces) max_faces=$2; shift 2 ;;
+    --timeout) timeout_s=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    --bin) bin=$2; shift 2 ;;
+    -h|--help) usage ;;
+    -*) echo "layout_quality.sh: unknown option $1" >&2; usage ;;
+    *) meshes+=("$1"); shift ;;
+  esac
+done
+if [[ ${#meshes[@]} -eq 0 ]]; then
+  mapfile -t meshes < <(ls "$("$root/bench/cgal_meshes.sh")"/*.off)
+fi
+mkdir -p "$work"
+cp "$bin" "$work/papercraft"
+sed 's/impl: layout.pages, /impl: layout.rectangles, /' "$root/configs/default.yaml" >"$work/rectangles.yaml"
+grep -q layout.rectangles "$work/rectangles.yaml" || { echo "no layout.pages in default.yaml" >&2; exit 2; }
+
+faces_of() {
+  awk 'NR == 1 && $1 ~ /OFF$/ && NF > 1 { print $3; exit }
+       NR == 1 && $1 ~ /OFF$/ { next }
+       /^[ \t]*#/ || NF == 0 { next }
+       { print $2; exit }' "$1" 2>/dev/null | grep -E '^[0-9]+$' || echo 0
+}
+
+rows=$work/rows.tsv
+: >"$rows"
+for mesh in "${meshes[@]}"; do
+  if [[ $max_faces -gt 0 && $mesh == *.off && $(faces_of "$mesh") -gt $max_faces ]]; then continue; fi
+  name=$(basename "${mesh%.*}")
+  ok=1
+  for variant in nest rect; do
+    args=()
+    [[ $variant == rect ]] && args=(-c "$work/rectangles.yaml")
+    if ! timeout "$timeout_s" "$work/papercraft" run "$mesh" --tolerance "$tolerance" \
+        --height "$height" --threads "$threads" --out "$work/$variant" -q "${args[@]}" \
+        >/dev/null 2>&1; then ok=0; fi
+  done
+  [[ $ok -eq 1 ]] || continue
+  python3 - "$work/nest/$name/report.json" "$work/rect/$name/report.json" "$name" >>"$rows" <<'PY'
+import json, sys
+n, r = (json.load(open(p)) for p in sys.argv[1:3])
+ln, lr = n["layout"], r["layout"]
+def fill(l):
+    f = l["page_fill"]
+    return sum(f[:-1]) / (len(f) - 1) if len(f) > 1 else float("nan")
+print("\t".join(str(x) for x in [sys.argv[3], ln["pages"], lr["pages"], f"{fill(ln):.3f}", f"{fill(lr):.3f}",
+      ln["seams"], ln["seams_without_tab"], ln["smallest_text_mm"], ln["overlapping_text"],
+      f'{n["timing"]["nodes"]["layout"]["seconds"]:.3f}', f'{r["timing"]["nodes"]["layout"]["seconds"]:.3f}']))
+PY
+done
+python3 - "$rows" <<'PY'
+import sys, math
+rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
+print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | layout s nest | layout s rect |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+for r in rows: print("| " + " | ".join(r) + " |")
+pn = sum(int(r[1]) for r in rows); pr = sum(int(r[2]) for r in rows)
+def mean(i):
+    v = [float(r[i]) for r in rows if not math.isnan(float(r[i]))]
+    return sum(v) / len(v) if v else float("nan")
+print()
+print(f"{len(rows)} meshes: pages {pn} nested vs {pr} rectangles ({pn / max(pr, 1):.3f}); "
+      f"mean fill but last page {mean(3):.3f} vs {mean(4):.3f}; seams without a tab "
+      f"{sum(int(r[6]) for r in rows)} of {sum(int(r[5]) for r in rows)}; smallest text "
+      f"{min(float(r[7]) for r in rows):.2f} mm; overlapping texts {sum(int(r[8]) for r in rows)}; "
+      f"layout seconds {sum(float(r[9]) for r in rows):.1f} vs {sum(float(r[10]) for r in rows):.1f}")
+drop = sorted(rows, key=lambda r: int(r[1]) - int(r[2]))[:5]
+print("largest page drops: " + ", ".join(f"{r[0]} {r[2]} -> {r[1]}" for r in drop))
+PY
