@@ -109,6 +109,7 @@ NodeSpec layout_spec(std::string name, std::string summary, const ParamTable<O>&
               in.model->update([&](ModelRecord& record) {
                 record.pages = static_cast<int>(layout->pages.size());
                 record.shelf_pages = layout->shelf_page_count;
+                record.rectangle_pages = layout->rectangle_page_count;
                 record.page_fill = layout->stats.page_fill;
                 record.seams = layout->stats.seams;
                 record.seams_without_tab = layout->stats.seams_without_tab;
