@@ -41,8 +41,11 @@ struct FoldLine {
 /// to `corners` (page mm), painted inside the convex polygon `clip` (page mm).
 struct TexturePatch {
   std::array<Vec2, 3> corners;
-  std::array<Vec2, 3> uvs;
+  std::array<Vec2, 3> uvs;  // zero when the strips have no uvs
   std::vector<Vec2> clip;
+  /// The 3D points of the corners (model units): the print image is baked from the input
+  /// surface nearest them (nodes/export/bake.h).
+  std::array<Vec3, 3> points3d = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 };
 
 /// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/appearance.h"
 #include "core/mesh.h"
 #include "core/pattern.h"
 #include "core/strip.h"
@@ -20,6 +21,8 @@ struct Model {
   std::shared_ptr<const Mesh> mesh;
   MeshSummary summary;
   std::string texture_path;
+  /// Materials, texture coordinates and colours per face of `mesh` (empty when it has none).
+  std::shared_ptr<const SurfaceAppearance> appearance;
 };
 
 /// A connected piece of the model being refined. Its vertices carry the int property

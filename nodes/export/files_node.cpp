@@ -4,7 +4,11 @@
 //
 //   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply], preset: print}}
 
+#include <spdlog/spdlog.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -13,7 +17,9 @@
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
+#include "nodes/export/bake.h"
 #include "nodes/export/files.h"
+#include "nodes/export/image.h"
 #include "nodes/export/pdf.h"
 #include "nodes/export/report_node.h"
 #include "nodes/export/svg.h"
@@ -25,7 +31,30 @@ namespace {
 struct ExportOptions {
   std::vector<std::string> formats = {"pdf", "svg", "obj", "json", "ply"};
   StyleOptions style;
+  BakeOptions bake;
+  long max_texture_pixels = 64'000'000;
 };
+
+// The texture image of every material, read once; a missing or unreadable one (or one too
+// large) is named with its material in the notes and on stderr, and left out.
+std::vector<std::shared_ptr<const Image>> material_images(ModelRun& model,
+                                                          const SurfaceAppearance& appearance,
+                                                          long max_pixels) {
+  std::vector<std::shared_ptr<const Image>> images(appearance.materials.size());
+  for (std::size_t m = 0; m < appearance.materials.size(); ++m) {
+    const Material& material = appearance.materials[m];
+    if (material.texture.empty()) continue;
+    try {
+      images[m] = std::make_shared<const Image>(load_image(material.texture, max_pixels));
+    } catch (const std::exception& e) {
+      const std::string text = "texture of material '" + printable_utf8(material.name) +
+                               "' not printed: " + printable_utf8(e.what());
+      model.note(text);
+      spdlog::warn("{}: {}", printable_utf8(model.name), text);
+    }
+  }
+  return images;
+}
 
 bool wants(const std::vector<std::string>& formats, const std::string& format) {
   return std::find(formats.begin(), formats.end(), format) != formats.end();
@@ -113,6 +142,19 @@ void register_export_files(Registry& registry) {
       ParamTable<O>()
           .add("formats", [](O & o) -> auto& { return o.formats; },
                "which files to write besides report.json", {}, {"pdf", "svg", "obj", "json", "ply"})
+          .add(
+              "texture_dpi", [](O & o) -> auto& { return o.bake.dpi; },
+              "resolution of the pieces' print images baked from the input's textures or colours",
+              between(10, 1200))
+          .add(
+              "bleed_mm", [](O & o) -> auto& { return o.bake.bleed_mm; },
+              "the print image reaches this far beyond the cut line", between(0, 10))
+          .add(
+              "tab_texture", [](O & o) -> auto& { return o.bake.tab_texture; },
+              "tabs print the partner piece's surface across the seam (false: blank)")
+          .add(
+              "max_texture_pixels", [](O & o) -> auto& { return o.max_texture_pixels; },
+              "a texture image with more pixels is refused, not read", at_least(1))
           .choice(
               "preset", [](O & o) -> auto& { return o.style.preset; },
               std::vector<std::pair<std::string, StylePreset>>{{"print", StylePreset::Print},
@@ -128,7 +170,9 @@ void register_export_files(Registry& registry) {
          const ExportOptions options = table.read(params);
          const std::vector<std::string>& formats = options.formats;
          const StyleOptions& style = options.style;
-         return make_body([formats, style](const Envelope& in, Emitter&) {
+         const BakeOptions bake = options.bake;
+         const long max_texture_pixels = options.max_texture_pixels;
+         return make_body([formats, style, bake, max_texture_pixels](const Envelope& in, Emitter&) {
            const Pattern& pattern = in.get<Pattern>();
            const ModelStrips& strips = *pattern.strips;
            ModelRun& model = *in.model;
@@ -161,12 +205,21 @@ void register_export_files(Registry& registry) {
              const PatternLayout& layout = *pattern.layout;
              StyleOptions page_style = style;
              page_style.title = printable_utf8(model.name);  // cairo and SVG: UTF-8
-             if (strips.model && !strips.model->texture_path.empty()) {
-               if (std::filesystem::path(strips.model->texture_path).extension() == ".png") {
-                 page_style.texture_path = strips.model->texture_path;
-               } else {
-                 model.note("texture " + strips.model->texture_path +
-                            " not drawn: only PNG textures are supported");
+             // The print images, baked from the input surface when it has textures or colours.
+             std::vector<std::vector<BakedImage>> images;
+             if (strips.model && strips.model->appearance && !strips.model->appearance->empty() &&
+                 (wants(formats, "pdf") || wants(formats, "svg"))) {
+               const SurfaceSampler sampler(
+                   *strips.model->mesh, *strips.model->appearance,
+                   material_images(model, *strips.model->appearance, max_texture_pixels));
+               if (!sampler.empty()) {
+                 std::map<int, const FlatStrip*> by_id;
+                 for (const FlatStrip& strip : strips.flat) by_id[strip.id] = &strip;
+                 images.resize(layout.pages.size());
+                 tbb::parallel_for(std::size_t{0}, layout.pages.size(), [&](std::size_t page) {
+                   images[page] = bake_page(layout.pages[page], by_id, sampler, bake);
+                 });
+                 page_style.images = &images;
                }
              }
              if (wants(formats, "json"))

@@ -80,26 +80,6 @@ StylePreset style_preset_from_name(std::string_view name) {
                               "': use print, laser or cutter");
 }
 
-std::vector<TexturePatch> page_texture_patches(const Page& page) {
-  std::vector<TexturePatch> patches;
-  for (const PlacedPiece& piece : page.pieces) {
-    if (piece.uvs.size() == piece.vertices.size() && !piece.uvs.empty()) {
-      for (const Triangle& t : piece.triangles) {
-        TexturePatch patch;
-        for (int k = 0; k < 3; ++k) {
-          patch.corners[k] = piece.vertices[t[k]];
-          patch.uvs[k] = piece.uvs[t[k]];
-        }
-        patch.clip.assign(patch.corners.begin(), patch.corners.end());
-        patches.push_back(std::move(patch));
-      }
-    }
-    for (const Tab& tab : piece.tabs)
-      patches.insert(patches.end(), tab.texture.begin(), tab.texture.end());
-  }
-  return patches;
-}
-
 namespace {
 
 // A polyline without repeated points (no zero-length segment reaches a cutter); empty when
@@ -203,9 +183,7 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
     }
     if (!gentle_hills.polylines.empty()) mountain.paths.push_back(std::move(gentle_hills));
     if (!gentle_dales.polylines.empty()) valley.paths.push_back(std::move(gentle_dales));
-    bool textured_tabs = false;
-    if (!style.texture_path.empty())
-      for (const Tab& tab : piece.tabs) textured_tabs = textured_tabs || !tab.texture.empty();
+    const bool textured_tabs = style.images != nullptr;
     // A textured tab shows the texture, not the grey fill; its outline is the cut line.
     DrawPath flaps{{}, true, false, pens.print, textured_tabs ? "" : pens.tab_fill};
     for (const Tab& tab : piece.tabs) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "core/pattern.h"
+#include "nodes/export/bake.h"
 
 namespace papercraft {
 
@@ -41,9 +42,9 @@ struct StyleOptions {
   StylePreset preset = StylePreset::Print;
   std::string font_family = "sans-serif";
   std::string title;  // printed in the footer when not empty (the model's name)
-  /// A PNG texture drawn onto pieces that carry uvs and onto their tabs (in the print
-  /// layer; the tabs then go unfilled); empty: none.
-  std::string texture_path;
+  /// Per page, the pieces' baked print images (bake.h), drawn under everything else; the
+  /// tabs then go unfilled. Null: none.
+  const std::vector<std::vector<BakedImage>>* images = nullptr;
 };
 
 /// A line style; widths and dashes in mm.
@@ -72,10 +73,6 @@ struct DrawLayer {
   std::vector<DrawPath> paths;
   std::vector<DrawText> texts;
 };
-
-/// The texture of a page: one patch per triangle of every piece with uvs (clipped to the
-/// triangle) and the patches of its tabs (TexturePatch in core/pattern.h).
-std::vector<TexturePatch> page_texture_patches(const Page& page);
 
 /// The registration marks of the cutter preset on `page` (layer "regmarks"): a filled 5 mm
 /// square at the top left, filled 20 mm L-brackets 0.3 mm thick at the top right and the

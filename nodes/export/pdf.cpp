@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -71,43 +72,26 @@ void draw_text(cairo_t* cr, const DrawText& text, const std::string& font) {
   cairo_restore(cr);
 }
 
-// Paints the page's texture patches: each gets the affine map taking its uv corners (in
-// texture pixels, v up) to its page corners, inside its clip polygon.
-void draw_texture(cairo_t* cr, cairo_surface_t* texture, const Page& page) {
-  const double w = cairo_image_surface_get_width(texture);
-  const double h = cairo_image_surface_get_height(texture);
-  cairo_pattern_t* pattern = cairo_pattern_create_for_surface(texture);
-  cairo_pattern_set_extend(pattern, CAIRO_EXTEND_PAD);
-  for (const TexturePatch& patch : page_texture_patches(page)) {
-    if (patch.clip.size() < 3) continue;
-    Eigen::Matrix3d from, to;
-    {
-      for (int k = 0; k < 3; ++k) {
-        const Vec2& uv = patch.uvs[k];
-        from.col(k) << uv.x() * w, (1.0 - uv.y()) * h, 1.0;
-        to.col(k) << patch.corners[k].x(), patch.corners[k].y(), 1.0;
-      }
-      if (std::abs(from.determinant()) < 1e-12 || std::abs(to.determinant()) < 1e-12) continue;
-    }
-    {
-      const Eigen::Matrix3d page_to_texture = from * to.inverse();  // cairo: user -> pattern
-      cairo_matrix_t matrix;
-      cairo_matrix_init(&matrix, page_to_texture(0, 0), page_to_texture(1, 0),
-                        page_to_texture(0, 1), page_to_texture(1, 1), page_to_texture(0, 2),
-                        page_to_texture(1, 2));
-      cairo_pattern_set_matrix(pattern, &matrix);
-      cairo_save(cr);
-      cairo_move_to(cr, patch.clip[0].x(), patch.clip[0].y());
-      for (std::size_t i = 1; i < patch.clip.size(); ++i)
-        cairo_line_to(cr, patch.clip[i].x(), patch.clip[i].y());
-      cairo_close_path(cr);
-      cairo_clip(cr);
-      cairo_set_source(cr, pattern);
-      cairo_paint(cr);
-      cairo_restore(cr);
-    }
+// Paints the pieces' baked print images at their place on the page.
+void draw_images(cairo_t* cr, const std::vector<BakedImage>& images) {
+  for (const BakedImage& image : images) {
+    if (image.width <= 0 || image.height <= 0) continue;
+    const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, image.width);
+    std::vector<unsigned char> data(std::size_t(stride) * image.height);
+    for (int y = 0; y < image.height; ++y)
+      std::memcpy(&data[std::size_t(y) * stride], &image.argb[std::size_t(y) * image.width],
+                  std::size_t(image.width) * 4);
+    cairo_surface_t* surface = cairo_image_surface_create_for_data(
+        data.data(), CAIRO_FORMAT_ARGB32, image.width, image.height, stride);
+    cairo_save(cr);
+    cairo_translate(cr, image.origin.x(), image.origin.y());
+    cairo_scale(cr, image.pixel_mm, image.pixel_mm);
+    cairo_set_source_surface(cr, surface, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_GOOD);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    cairo_surface_destroy(surface);
   }
-  cairo_pattern_destroy(pattern);
 }
 
 struct SurfaceDeleter {
@@ -137,17 +121,13 @@ void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path&
   {
     std::unique_ptr<cairo_t, ContextDeleter> cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
-    std::unique_ptr<cairo_surface_t, SurfaceDeleter> texture;
-    if (!style.texture_path.empty()) {
-      texture.reset(cairo_image_surface_create_from_png(style.texture_path.c_str()));
-      if (cairo_surface_status(texture.get()) != CAIRO_STATUS_SUCCESS) texture.reset();
-    }
     if (guide && !layout.pages.empty()) {
       draw_guide(cr.get(), *guide, layout.page, style.title, style.font_family);
       cairo_show_page(cr.get());
     }
     for (int page = 0; page < static_cast<int>(layout.pages.size()); ++page) {
-      if (texture) draw_texture(cr.get(), texture.get(), layout.pages[page]);
+      if (style.images && static_cast<std::size_t>(page) < style.images->size())
+        draw_images(cr.get(), (*style.images)[page]);
       for (const DrawLayer& layer : pattern_page_drawing(layout, page, style)) {
         for (const DrawPath& p : layer.paths) draw_path(cr.get(), p);
         for (const DrawText& t : layer.texts) draw_text(cr.get(), t, style.font_family);

@@ -14,7 +14,7 @@ namespace papercraft {
 /// `guide`, the assembly guide first (guide.h), then every pattern page. A layout without
 /// pages gives one blank page so the file is still a valid PDF.
 /// \throws IOException if the file cannot be written.
-/// Known limit: the strips' texture is not drawn; layers are not PDF optional content.
+/// Known limit: layers are not PDF optional content.
 void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
                        const StyleOptions& style = {},
                        const std::vector<GuidePiece>* guide = nullptr);

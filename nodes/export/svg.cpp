@@ -117,50 +117,15 @@ struct Png {
   int height = 0;
 };
 
-Png read_png(const std::string& path) {
-  Png png;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return png;
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return png;
-  auto big_endian = [&](std::size_t at) {
-    unsigned v = 0;
-    for (int k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[at + k]);
-    return static_cast<int>(v);
-  };
-  png.width = big_endian(16);
-  png.height = big_endian(20);
-  if (png.width <= 0 || png.height <= 0) return {};
-  png.bytes = std::move(bytes);
-  return png;
-}
-
-// The texture in the print layer: the image once (in defs), then per patch a clip path and
-// a <use> of the image under the affine map taking texture pixels to page mm.
-void write_texture(std::ostringstream& out, const std::vector<TexturePatch>& patches,
-                   const Png& png) {
-  const double w = png.width, h = png.height;
-  out << "    <defs>\n      <image id=\"texture\" x=\"0\" y=\"0\" width=\"" << png.width
-      << "\" height=\"" << png.height << "\" preserveAspectRatio=\"none\" "
-      << "xlink:href=\"data:image/png;base64," << base64(png.bytes) << "\"/>\n    </defs>\n";
-  int id = 0;
-  for (const TexturePatch& patch : patches) {
-    if (patch.clip.size() < 3) continue;
-    Eigen::Matrix3d from, to;
-    for (int k = 0; k < 3; ++k) {
-      from.col(k) << patch.uvs[k].x() * w, (1.0 - patch.uvs[k].y()) * h, 1.0;
-      to.col(k) << patch.corners[k].x(), patch.corners[k].y(), 1.0;
-    }
-    if (std::abs(from.determinant()) < 1e-12 || std::abs(to.determinant()) < 1e-12) continue;
-    const Eigen::Matrix3d m = to * from.inverse();
-    DrawPath clip{{patch.clip}, true, false, {}, ""};
-    char matrix[256];
-    std::snprintf(matrix, sizeof matrix, "matrix(%.9g %.9g %.9g %.9g %.9g %.9g)", m(0, 0), m(1, 0),
-                  m(0, 1), m(1, 1), m(0, 2), m(1, 2));
-    out << "    <clipPath id=\"texture-clip-" << id << "\"><path d=\"" << path_data(clip)
-        << "\"/></clipPath>\n    <g clip-path=\"url(#texture-clip-" << id
-        << ")\"><use xlink:href=\"#texture\" transform=\"" << matrix << "\"/></g>\n";
-    ++id;
+// The pieces' baked print images, as embedded PNGs at their place on the page.
+void write_images(std::ostringstream& out, const std::vector<BakedImage>& images) {
+  for (const BakedImage& image : images) {
+    if (image.width <= 0 || image.height <= 0) continue;
+    out << "    <image x=\"" << number(image.origin.x()) << "\" y=\"" << number(image.origin.y())
+        << "\" width=\"" << number(image.width * image.pixel_mm) << "\" height=\""
+        << number(image.height * image.pixel_mm)
+        << "\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,"
+        << base64(png_bytes(image)) << "\"/>\n";
   }
 }
 
@@ -182,14 +147,9 @@ std::string pattern_page_svg(const PatternLayout& layout, int page_index,
   for (const DrawLayer& layer : layers) {
     out << "  <g inkscape:groupmode=\"layer\" id=\"" << layer.id << "\" inkscape:label=\""
         << layer.id << "\">\n";
-    if (layer.id == "print" && !style.texture_path.empty()) {
-      const std::vector<TexturePatch> patches =
-          page_texture_patches(layout.pages[static_cast<std::size_t>(page_index)]);
-      if (!patches.empty()) {
-        const Png png = read_png(style.texture_path);
-        if (!png.bytes.empty()) write_texture(out, patches, png);
-      }
-    }
+    if (&layer == &layers.front() && style.images &&
+        static_cast<std::size_t>(page_index) < style.images->size())
+      write_images(out, (*style.images)[static_cast<std::size_t>(page_index)]);
     for (const DrawPath& path : layer.paths) write_path(out, path);
     for (const DrawText& text : layer.texts) write_text(out, text, style.font_family);
     out << "  </g>\n";

@@ -13,7 +13,6 @@ namespace papercraft {
 
 /// The SVG document of page `page_index` (0-based) of `layout`.
 /// \throws InvalidInputException if page_index is not a page of the layout.
-/// Known limit: the strips' texture is not drawn.
 std::string pattern_page_svg(const PatternLayout& layout, int page_index,
                              const StyleOptions& style = {});
 

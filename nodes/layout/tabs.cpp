@@ -197,14 +197,6 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
   return plans;
 }
 
-double plans_length(const std::vector<FlapPlan>& plans) {
-  double length = 0;
-  for (const FlapPlan& plan : plans)
-    for (std::size_t i = 0; i + 1 < plan.base.size(); ++i)
-      length += (plan.base[i + 1] - plan.base[i]).norm();
-  return length;
-}
-
 void commit_flaps(Piece& piece, const Chain& chain, const std::string& printed,
                   std::vector<FlapPlan>& plans,
                   const std::function<std::optional<TexturePatch>(int)>& edge_texture) {
@@ -264,7 +256,7 @@ std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
     const PieceEdge& f = pieces[p2].loops[l2][i2];
     const FlatStrip& strip2 = *other.strip;
     auto owner = other.owner.find(directed_edge_key(f.v0, f.v1));
-    if (!strip2.uvs.empty() && owner != other.owner.end()) {
+    if (owner != other.owner.end()) {
       const int d = third(strip2, owner->second, f.v0, f.v1);
       const Vec2 p0 = other.points[f.v0], p1 = other.points[f.v1], q = other.points[d];
       const double length = (p1 - p0).norm(), own_length = (a - b).norm();
@@ -273,18 +265,22 @@ std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
         const Vec2 along = (p1 - p0) / length, own_along = (a - b) / own_length;
         const double s = (q - p0).dot(along), t = cross(along, q - p0);
         const Vec2 unfolded = b + s * own_along + t * Vec2(-own_along.y(), own_along.x());
-        return TexturePatch{
-            {b, a, unfolded}, {strip2.uvs[f.v0], strip2.uvs[f.v1], strip2.uvs[d]}, {}};
+        TexturePatch patch{{b, a, unfolded}, {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()}, {}};
+        if (!strip2.uvs.empty()) patch.uvs = {strip2.uvs[f.v0], strip2.uvs[f.v1], strip2.uvs[d]};
+        patch.points3d = {strip2.vertices3d[f.v0], strip2.vertices3d[f.v1], strip2.vertices3d[d]};
+        return patch;
       }
     }
   }
   const FlatStrip& strip = *data.strip;
-  if (strip.uvs.empty()) return std::nullopt;
   auto owner = data.owner.find(directed_edge_key(e.v0, e.v1));
   if (owner == data.owner.end()) return std::nullopt;
   const int c = third(strip, owner->second, e.v0, e.v1);
   if (c < 0) return std::nullopt;
-  return TexturePatch{{a, b, data.points[c]}, {strip.uvs[e.v0], strip.uvs[e.v1], strip.uvs[c]}, {}};
+  TexturePatch patch{{a, b, data.points[c]}, {Vec2::Zero(), Vec2::Zero(), Vec2::Zero()}, {}};
+  if (!strip.uvs.empty()) patch.uvs = {strip.uvs[e.v0], strip.uvs[e.v1], strip.uvs[c]};
+  patch.points3d = {strip.vertices3d[e.v0], strip.vertices3d[e.v1], strip.vertices3d[c]};
+  return patch;
 }
 
 }  // namespace
@@ -390,7 +386,8 @@ void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
         any = true;
       }
     }
-    if (!any) warnings.push_back("seam " + pair.printed + " has no room for a glue tab on either side");
+    if (!any)
+      warnings.push_back("seam " + pair.printed + " has no room for a glue tab on either side");
   }
 }
 

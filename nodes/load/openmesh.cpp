@@ -13,6 +13,7 @@
 
 #include "core/errors.h"
 #include "nodes/load/file_scanner.h"
+#include "nodes/load/materials.h"
 #include "nodes/load/messages.h"
 #include "nodes/load/parse_values.h"
 #include "nodes/load/prescan.h"
@@ -38,13 +39,95 @@ std::string texture_of(const RawMesh& raw, const Prescan& scan, const std::files
       best_faces = faces;
     }
   }
-  std::string_view name = trim(raw.textures.at(best));
-  if (!name.empty() && name.front() == '-') {
-    // map_Kd options ("-s 1 1 1 wood.png"): the file name comes last.
-    const std::size_t last = name.find_last_of(" \t");
-    if (last != std::string_view::npos) name = name.substr(last + 1);
+  const std::string name = texture_file_name(raw.textures.at(best));
+  return (scan.material_library.parent_path() / name).lexically_normal().string();
+}
+
+// What the appearance needs of the file's faces and vertices, kept past the raw mesh.
+struct RawAppearance {
+  std::vector<Material> materials;
+  std::vector<int> face_material;  // per file face
+  std::vector<Vec3d> vertex_colour;
+  std::vector<Vec3d> face_colour;
+};
+
+RawAppearance raw_appearance(const RawMesh& raw, const Prescan& scan,
+                             const std::filesystem::path& path) {
+  RawAppearance a;
+  if (scan.format == Format::ply && !scan.ply_texture.empty()) {
+    a.materials.push_back(
+        {scan.ply_texture, (path.parent_path() / scan.ply_texture).lexically_normal().string()});
+    a.face_material.assign(raw.n_faces(), 0);
+  } else if (scan.format == Format::obj && !raw.textures.empty()) {
+    const auto names = material_names(scan.material_library);
+    std::map<int, int> index;  // texture id -> material
+    for (const auto& [id, map_kd] : raw.textures) {
+      const std::string file = texture_file_name(map_kd);
+      const auto named = names.find(file);
+      index[id] = static_cast<int>(a.materials.size());
+      a.materials.push_back(
+          {named != names.end() ? named->second : file,
+           (scan.material_library.parent_path() / file).lexically_normal().string()});
+    }
+    a.face_material.assign(raw.n_faces(), -1);
+    for (std::size_t f = 0; f < raw.face_texture.size() && f < raw.n_faces(); ++f) {
+      const auto it = index.find(raw.face_texture[f]);
+      if (it != index.end()) a.face_material[f] = it->second;
+    }
   }
-  return (scan.material_library.parent_path() / std::string(name)).lexically_normal().string();
+  // Colours count only when every vertex (face) has one.
+  if (!raw.vertex_has_colour.empty() &&
+      std::count(raw.vertex_has_colour.begin(), raw.vertex_has_colour.end(), 1) ==
+          static_cast<std::ptrdiff_t>(raw.positions.size()))
+    a.vertex_colour = raw.vertex_colour;
+  else if (!raw.face_has_colour.empty() &&
+           std::count(raw.face_has_colour.begin(), raw.face_has_colour.end(), 1) ==
+               static_cast<std::ptrdiff_t>(raw.n_faces()))
+    a.face_colour = raw.face_colour;
+  return a;
+}
+
+// The appearance per face of the built mesh (face f is soup triangle f).
+SurfaceAppearance mesh_appearance(RawAppearance raw, const Soup& soup, bool with_uvs) {
+  SurfaceAppearance a;
+  const std::size_t faces = soup.triangles.size();
+  a.face_vertices.assign(soup.triangles.begin(), soup.triangles.end());
+  if (!raw.face_material.empty()) {
+    a.materials = std::move(raw.materials);
+    a.face_material.resize(faces);
+    for (std::size_t f = 0; f < faces; ++f) {
+      const int source = soup.source_face[f];
+      a.face_material[f] =
+          source >= 0 && static_cast<std::size_t>(source) < raw.face_material.size()
+              ? raw.face_material[source]
+              : -1;
+    }
+  }
+  if (with_uvs) {
+    a.face_uv.resize(faces);
+    for (std::size_t f = 0; f < faces; ++f)
+      for (int k = 0; k < 3; ++k)
+        a.face_uv[f][k] = Vec2(soup.corner_uv[f][k][0], soup.corner_uv[f][k][1]);
+  }
+  if (!raw.vertex_colour.empty() || !raw.face_colour.empty()) {
+    a.face_colour.resize(faces);
+    for (std::size_t f = 0; f < faces; ++f) {
+      for (int k = 0; k < 3; ++k) {
+        Vec3d c(0.5, 0.5, 0.5);
+        if (!raw.vertex_colour.empty()) {
+          const int source = soup.source_vertex[soup.triangles[f][k]];
+          if (source >= 0 && static_cast<std::size_t>(source) < raw.vertex_colour.size())
+            c = raw.vertex_colour[source];
+        } else {
+          const int source = soup.source_face[f];
+          if (source >= 0 && static_cast<std::size_t>(source) < raw.face_colour.size())
+            c = raw.face_colour[source];
+        }
+        a.face_colour[f][k] = Vec3(c[0], c[1], c[2]);
+      }
+    }
+  }
+  return a;
 }
 
 LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptions& options,
@@ -101,6 +184,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
     }
   }
   loaded.texture_path = texture_of(raw, scan, path);
+  RawAppearance appearance = raw_appearance(raw, scan, path);
 
   Soup soup = triangulate(raw, with_uvs, options, file, loaded.repairs);
   raw = RawMesh();
@@ -137,6 +221,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
                               ") as non-manifold");
     }
   }
+  loaded.appearance = mesh_appearance(std::move(appearance), soup, with_uvs);
   auto input_vertex =
       OpenMesh::getOrMakeProperty<OpenMesh::VertexHandle, int>(mesh, kInputVertexProperty);
   for (auto v : mesh.vertices()) input_vertex[v] = soup.source_vertex[v.idx()];

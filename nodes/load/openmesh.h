@@ -28,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "core/appearance.h"
 #include "core/mesh.h"
 
 namespace papercraft {
@@ -66,6 +67,10 @@ struct LoadedMesh {
   /// .mtl file's folder) or a PLY's "comment TextureFile" (against the PLY's folder); empty if
   /// none. Not checked for existence.
   std::string texture_path;
+  /// Per face of `mesh`: its material (every map_Kd of an OBJ's materials, a PLY's
+  /// "comment TextureFile"), corner texture coordinates and corner colours (PLY and COFF
+  /// vertex colours, PLY face colours). Texture files are not checked for existence here.
+  SurfaceAppearance appearance;
   /// One line per change made to the file's data, e.g. "removed 3 unreferenced vertices",
   /// "merged 12 exactly duplicate vertices", "triangulated 6 polygons into 12 triangles".
   /// An STL always gets the weld line: OpenMesh's STL reader merges equal corners itself.

@@ -7,18 +7,27 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <fstream>
 #include <mutex>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 
 #include "nodes/load/messages.h"
 #include "nodes/load/parse_values.h"
 
 namespace papercraft::load_internal {
 namespace {
+
+// A colour as red, green, blue in [0, 1]: bytes are scaled, floats taken as they are.
+template <class Colour>
+Vec3d rgb(const Colour& c) {
+  const double scale = std::is_integral_v<typename Colour::value_type> ? 1.0 / 255.0 : 1.0;
+  return Vec3d(c[0], c[1], c[2]) * scale;
+}
 
 // Records what OpenMesh's reader finds: fake handles are raw indices, nothing is validated or
 // dropped, header counts given to reserve() are ignored (they are not trusted).
@@ -63,8 +72,11 @@ class RecordingImporter final : public OpenMesh::IO::BaseImporter {
   }
   void add_face_texcoords(OpenMesh::FaceHandle, OpenMesh::VertexHandle,
                           const std::vector<OpenMesh::Vec3f>&) override {}
-  void set_face_texindex(OpenMesh::FaceHandle, int texture) override {
+  void set_face_texindex(OpenMesh::FaceHandle face, int texture) override {
     if (texture > 0) ++raw_.faces_per_texture[texture];
+    if (face.idx() < 0 || static_cast<std::size_t>(face.idx()) >= raw_.n_faces()) return;
+    raw_.face_texture.resize(raw_.n_faces(), 0);
+    raw_.face_texture[face.idx()] = texture;
   }
   void set_point(OpenMesh::VertexHandle vertex, const OpenMesh::Vec3f& point) override {
     if (vertex.idx() >= 0 && static_cast<std::size_t>(vertex.idx()) < raw_.positions.size()) {
@@ -91,10 +103,10 @@ class RecordingImporter final : public OpenMesh::IO::BaseImporter {
   void set_halfedge(OpenMesh::VertexHandle, OpenMesh::HalfedgeHandle) override {}
   void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
   void set_normal(OpenMesh::VertexHandle, const OpenMesh::Vec3d&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3uc&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4uc&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec3f&) override {}
-  void set_color(OpenMesh::VertexHandle, const OpenMesh::Vec4f&) override {}
+  void set_color(OpenMesh::VertexHandle v, const OpenMesh::Vec3uc& c) override { vertex_colour(v, rgb(c)); }
+  void set_color(OpenMesh::VertexHandle v, const OpenMesh::Vec4uc& c) override { vertex_colour(v, rgb(c)); }
+  void set_color(OpenMesh::VertexHandle v, const OpenMesh::Vec3f& c) override { vertex_colour(v, rgb(c)); }
+  void set_color(OpenMesh::VertexHandle v, const OpenMesh::Vec4f& c) override { vertex_colour(v, rgb(c)); }
   void set_status(OpenMesh::VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void set_next(OpenMesh::HalfedgeHandle, OpenMesh::HalfedgeHandle) override {}
   void set_face(OpenMesh::HalfedgeHandle, OpenMesh::FaceHandle) override {}
@@ -110,14 +122,33 @@ class RecordingImporter final : public OpenMesh::IO::BaseImporter {
   void set_status(OpenMesh::EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
   void set_normal(OpenMesh::FaceHandle, const OpenMesh::Vec3d&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3uc&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4uc&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec3f&) override {}
-  void set_color(OpenMesh::FaceHandle, const OpenMesh::Vec4f&) override {}
+  void set_color(OpenMesh::FaceHandle f, const OpenMesh::Vec3uc& c) override { face_colour(f, rgb(c)); }
+  void set_color(OpenMesh::FaceHandle f, const OpenMesh::Vec4uc& c) override { face_colour(f, rgb(c)); }
+  void set_color(OpenMesh::FaceHandle f, const OpenMesh::Vec3f& c) override { face_colour(f, rgb(c)); }
+  void set_color(OpenMesh::FaceHandle f, const OpenMesh::Vec4f& c) override { face_colour(f, rgb(c)); }
   void set_status(OpenMesh::FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
   void reserve(unsigned int, unsigned int, unsigned int) override {}
 
  private:
+  static Vec3d clamped(const Vec3d& c) {
+    return Vec3d(std::clamp(c[0], 0.0, 1.0), std::clamp(c[1], 0.0, 1.0),
+                 std::clamp(c[2], 0.0, 1.0));
+  }
+  void vertex_colour(OpenMesh::VertexHandle v, const Vec3d& c) {
+    if (v.idx() < 0 || static_cast<std::size_t>(v.idx()) >= raw_.positions.size()) return;
+    raw_.vertex_colour.resize(raw_.positions.size());
+    raw_.vertex_has_colour.resize(raw_.positions.size(), 0);
+    raw_.vertex_colour[v.idx()] = clamped(c);
+    raw_.vertex_has_colour[v.idx()] = 1;
+  }
+  void face_colour(OpenMesh::FaceHandle f, const Vec3d& c) {
+    if (f.idx() < 0 || static_cast<std::size_t>(f.idx()) >= raw_.n_faces()) return;
+    raw_.face_colour.resize(raw_.n_faces());
+    raw_.face_has_colour.resize(raw_.n_faces(), 0);
+    raw_.face_colour[f.idx()] = clamped(c);
+    raw_.face_has_colour[f.idx()] = 1;
+  }
+
   OpenMesh::VertexHandle push_vertex(const Vec3d& point) {
     raw_.positions.push_back(point);
     return OpenMesh::VertexHandle(static_cast<int>(raw_.positions.size() - 1));
@@ -165,6 +196,8 @@ RawMesh read_with_openmesh(const std::filesystem::path& path, const std::string&
   OpenMesh::IO::Options options;
   options += OpenMesh::IO::Options::VertexTexCoord;
   options += OpenMesh::IO::Options::FaceTexCoord;
+  options += OpenMesh::IO::Options::VertexColor;
+  options += OpenMesh::IO::Options::FaceColor;
   // OpenMesh's stream reader skips the header check that sets the OFF reader's options, so a
   // cleaned OFF goes through a temporary file.
   std::filesystem::path source = path;

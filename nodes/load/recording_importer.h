@@ -29,6 +29,12 @@ struct RawMesh {
   std::vector<char> vertex_has_uv;
   std::map<int, std::string> textures;  // OBJ texture id -> map_Kd
   std::map<int, std::size_t> faces_per_texture;
+  std::vector<int> face_texture;  // per face: its texture id (0: none), once any face had one
+  // Colours in 0..1, once any vertex (face) had one.
+  std::vector<Vec3d> vertex_colour;
+  std::vector<char> vertex_has_colour;
+  std::vector<Vec3d> face_colour;
+  std::vector<char> face_has_colour;
 
   std::size_t n_faces() const { return face_start.size() - 1; }
 };

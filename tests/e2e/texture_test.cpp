@@ -1,78 +1,61 @@
-// End to end: UVs and a PNG texture travel from an OBJ to the strips and into the PDF and
-// SVG pages, on the strips and on their glue tabs.
+// End to end: what is printed on the pieces is baked from the input surface (textures through
+// per-corner UVs, several materials, colours), checked on the rendered PDF: the pixel at a
+// point well inside a piece's triangle shows the colour of the input under the 3D point it
+// comes from.
 
 #include <cairo.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/generate.h"
+#include "support/brute_force_hausdorff.h"
 #include "support/pipeline_run.h"
 
 namespace papercraft {
 namespace {
 
-std::filesystem::path svg_name(const std::filesystem::path& dir, int page) {
-  char name[32];
-  std::snprintf(name, sizeof name, "pattern-%02d.svg", page);
-  return dir / name;
-}
-
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
-std::string layer(const std::string& svg, const std::string& id) {
-  const std::size_t begin = svg.find("id=\"" + id + "\"");
-  if (begin == std::string::npos) return "";
-  return svg.substr(begin, svg.find("</g>", begin) - begin);
-}
-
-// The subpaths ("M x,y L x,y ... Z") of every path in `svg`.
-std::vector<std::vector<Vec2>> subpaths(const std::string& svg) {
-  std::vector<std::vector<Vec2>> result;
-  for (std::size_t at = svg.find(" d=\""); at != std::string::npos;
-       at = svg.find(" d=\"", at + 1)) {
-    std::istringstream in(svg.substr(at + 4, svg.find('"', at + 4) - at - 4));
-    std::string token;
-    while (in >> token) {
-      if (token == "Z") continue;
-      if (token[0] == 'M') result.emplace_back();
-      double x = 0, y = 0;
-      if (std::sscanf(token.c_str() + 1, "%lf,%lf", &x, &y) == 2) result.back().emplace_back(x, y);
-    }
-  }
-  return result;
-}
-
-bool inside(const Vec2& p, const std::vector<Vec2>& polygon) {
-  bool in = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Vec2 &a = polygon[i], &b = polygon[j];
-    if ((a.y() > p.y()) != (b.y() > p.y()) &&
-        p.x() < (b.x() - a.x()) * (p.y() - a.y()) / (b.y() - a.y()) + a.x())
-      in = !in;
-  }
-  return in;
-}
-
-struct Image {
-  int width = 0, height = 0;
-  std::vector<unsigned char> pixels;  // rgb
+struct Rgb {
+  int r, g, b;
 };
 
-// A binary PPM (P6, maxval 255) as pdftoppm writes it.
-Image read_ppm(const std::string& path) {
-  Image image;
+void write_png(const std::filesystem::path& path, int width, int height,
+               const std::function<Rgb(int, int)>& colour) {
+  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
+  cairo_surface_flush(image);
+  unsigned char* data = cairo_image_surface_get_data(image);
+  const int stride = cairo_image_surface_get_stride(image);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const Rgb c = colour(x, y);
+      const std::uint32_t pixel = 0xff000000u | (c.r << 16) | (c.g << 8) | c.b;
+      std::memcpy(data + y * stride + 4 * x, &pixel, 4);
+    }
+  cairo_surface_mark_dirty(image);
+  ASSERT_EQ(cairo_surface_write_to_png(image, path.c_str()), CAIRO_STATUS_SUCCESS);
+  cairo_surface_destroy(image);
+}
+
+struct Ppm {
+  int width = 0, height = 0;
+  std::vector<unsigned char> pixels;
+};
+
+Ppm read_ppm(const std::string& path) {
+  Ppm image;
   std::ifstream in(path, std::ios::binary);
   std::string magic;
   int maxval = 0;
@@ -82,107 +65,341 @@ Image read_ppm(const std::string& path) {
   image.pixels.resize(static_cast<std::size_t>(3 * image.width * image.height));
   in.read(reinterpret_cast<char*>(image.pixels.data()),
           static_cast<std::streamsize>(image.pixels.size()));
-  if (!in) return {};
   return image;
 }
 
-TEST(Texture, UvsReachStripsAndTheTextureIsDrawnInThePdf) {
-  const auto dir = testing::fresh_temp_dir("texture");
-  // A checkerboard PNG.
-  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 64, 64);
-  cairo_t* cr = cairo_create(image);
-  for (int i = 0; i < 8; ++i) {
-    for (int j = 0; j < 8; ++j) {
-      cairo_set_source_rgb(cr, (i + j) % 2 ? 0.9 : 0.1, 0.3, (i + j) % 2 ? 0.1 : 0.8);
-      cairo_rectangle(cr, 8 * i, 8 * j, 8, 8);
-      cairo_fill(cr);
+struct Checked {
+  int sampled = 0;
+  int matching = 0;
+  int split = 0, small = 0, undecided = 0, off_page = 0;  // skipped, and why
+  std::string first_miss;
+};
+
+std::ostream& operator<<(std::ostream& out, const Checked& c) {
+  return out << c.matching << " of " << c.sampled << " (skipped: split " << c.split << ", small "
+             << c.small << ", undecided " << c.undecided << ", off page " << c.off_page
+             << "; first miss " << c.first_miss << ")";
+}
+
+// Renders every pattern page of the run in `dir` and compares, at points well inside each
+// piece's triangles, the printed colour with `expected(3D point)` (nullopt: the point is too
+// near a colour boundary to judge).
+Checked check_printed_colours(const std::filesystem::path& dir,
+                              const std::function<std::optional<Rgb>(const Vec3&)>& expected) {
+  constexpr double kDpi = 100;
+  Checked checked;
+  const auto strips = nlohmann::json::parse(testing::read_text(dir / "strips.json")).at("strips");
+  const auto pieces = nlohmann::json::parse(testing::read_text(dir / "pieces.json")).at("pieces");
+  std::map<int, const nlohmann::json*> by_id;
+  for (const auto& strip : strips) by_id[strip.at("id").get<int>()] = &strip;
+  std::map<int, Ppm> pages;
+  for (const auto& piece : pieces) {
+    const int page = piece.at("page").get<int>();
+    if (!pages.count(page)) {
+      const auto ppm = dir / ("render-" + std::to_string(page));
+      const int pdf_page = page + 1;  // the assembly guide comes first
+      const std::string command = "pdftoppm -r 100 -f " + std::to_string(pdf_page) + " -l " +
+                                  std::to_string(pdf_page) + " -singlefile '" +
+                                  (dir / "pattern.pdf").string() + "' '" + ppm.string() + "'";
+      EXPECT_EQ(std::system(command.c_str()), 0) << command;
+      pages[page] = read_ppm(ppm.string() + ".ppm");
+    }
+    const Ppm& image = pages[page];
+    const auto& t = piece.at("transform");
+    Eigen::Matrix2d linear;
+    linear << t.at("linear")[0].get<double>(), t.at("linear")[1].get<double>(),
+        t.at("linear")[2].get<double>(), t.at("linear")[3].get<double>();
+    const Vec2 translation(t.at("translation")[0].get<double>(),
+                           t.at("translation")[1].get<double>());
+    const nlohmann::json& strip = *by_id.at(piece.at("strip").get<int>());
+    // A split strip's triangles are on several pieces: judge only those whose centre maps
+    // into the page (and is covered by this piece: a whole strip when not split).
+    if (piece.at("piece_count").get<int>() > 1) {
+      ++checked.split;
+      continue;
+    }
+    auto sample = [&](const Vec2& centre, const Vec3& point) {
+      const auto want = expected(point);
+      if (!want) {
+        ++checked.undecided;
+        return;
+      }
+      const int x = static_cast<int>(centre.x() / 25.4 * kDpi);
+      const int y = static_cast<int>(centre.y() / 25.4 * kDpi);
+      if (x < 0 || y < 0 || x >= image.width || y >= image.height) {
+        ++checked.off_page;
+        return;
+      }
+      // The median of a 5 x 5 window: a fold line or a letter printed over the image is thin.
+      unsigned char got[3];
+      for (int channel = 0; channel < 3; ++channel) {
+        std::vector<unsigned char> values;
+        for (int dy = -2; dy <= 2; ++dy)
+          for (int dx = -2; dx <= 2; ++dx) {
+            const int px = std::clamp(x + dx, 0, image.width - 1);
+            const int py = std::clamp(y + dy, 0, image.height - 1);
+            values.push_back(image.pixels[3 * (std::size_t(py) * image.width + px) + channel]);
+          }
+        std::nth_element(values.begin(), values.begin() + 12, values.end());
+        got[channel] = values[12];
+      }
+      ++checked.sampled;
+      if (std::abs(got[0] - want->r) < 40 && std::abs(got[1] - want->g) < 40 &&
+          std::abs(got[2] - want->b) < 40) {
+        ++checked.matching;
+      } else if (checked.first_miss.empty()) {
+        checked.first_miss = "at (" + std::to_string(point.x()) + ", " + std::to_string(point.y()) +
+                             ", " + std::to_string(point.z()) + ") got " + std::to_string(got[0]) +
+                             "," + std::to_string(got[1]) + "," + std::to_string(got[2]) +
+                             " want " + std::to_string(want->r) + "," + std::to_string(want->g) +
+                             "," + std::to_string(want->b);
+      }
+    };
+    for (const auto& tri : strip.at("triangles")) {
+      Vec2 page_corner[3];
+      Vec3 corner3[3];
+      for (int k = 0; k < 3; ++k) {
+        const int v = tri[k].get<int>();
+        const auto& p2 = strip.at("vertices2d")[v];
+        page_corner[k] = linear * Vec2(p2[0].get<double>(), p2[1].get<double>()) + translation;
+        const auto& p3 = strip.at("vertices3d")[v];
+        corner3[k] = Vec3(p3[0].get<double>(), p3[1].get<double>(), p3[2].get<double>());
+      }
+      // Points on a barycentric grid inside the triangle, each at least 3 pixels from its
+      // edges (the 5 x 5 window below stays inside).
+      const Vec2 e1 = page_corner[1] - page_corner[0], e2 = page_corner[2] - page_corner[0];
+      const double twice_area = std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+      if (twice_area <= 0) continue;
+      double heights[3];
+      for (int k = 0; k < 3; ++k)
+        heights[k] = twice_area / (page_corner[(k + 2) % 3] - page_corner[(k + 1) % 3]).norm();
+      constexpr int kGrid = 6;
+      for (int i = 1; i < kGrid; ++i)
+        for (int j = 1; i + j < kGrid; ++j) {
+          const double w[3] = {double(i) / kGrid, double(j) / kGrid, double(kGrid - i - j) / kGrid};
+          bool inside = true;
+          for (int k = 0; k < 3; ++k) inside = inside && w[k] * heights[k] >= 3 * 25.4 / kDpi;
+          if (!inside) {
+            ++checked.small;
+            continue;
+          }
+          const Vec2 centre = w[0] * page_corner[0] + w[1] * page_corner[1] + w[2] * page_corner[2];
+          const Vec3 point = w[0] * corner3[0] + w[1] * corner3[1] + w[2] * corner3[2];
+          sample(centre, point);
+        }
     }
   }
-  cairo_destroy(cr);
-  ASSERT_EQ(cairo_surface_write_to_png(image, (dir / "checker.png").c_str()), CAIRO_STATUS_SUCCESS);
-  cairo_surface_destroy(image);
-  std::ofstream(dir / "tube.mtl") << "newmtl skin\nmap_Kd checker.png\n";
-  // An open cylinder with seam-free uvs: u from cos(angle), v from height.
+  return checked;
+}
+
+testing::PipelineOutput run_file(const std::filesystem::path& input, const std::string& tolerance) {
+  const Registry& registry = builtin_registry();
+  auto settings = std::make_shared<RunSettings>();
+  settings->tolerance = parse_tolerance(tolerance);
+  settings->output_dir = input.parent_path() / "out";
+  settings->paper.height_mm = 90;  // small enough that no strip is split for the page
+  Pipeline pipeline(parse_pipeline_config(default_config_text(), "default.yaml", registry),
+                    registry);
+  testing::PipelineOutput out;
+  out.result = pipeline.run({input}, settings).at(0);
+  out.dir = settings->output_dir / input.stem();
+  if (out.result.ok)
+    out.report = nlohmann::json::parse(testing::read_text(out.dir / "report.json"));
+  return out;
+}
+
+constexpr Rgb kSideColours[6] = {{220, 40, 40},  {40, 180, 60},  {40, 70, 220},
+                                 {230, 200, 40}, {200, 60, 200}, {40, 200, 210}};
+
+// A cube whose six faces are separate UV islands of one atlas, each a solid colour: the
+// cells of a 3 x 2 grid, so every cube edge is a UV seam.
+TEST(Texture, CubeOfSixUvIslandsPrintsEachFaceInItsColour) {
+  const auto dir = testing::fresh_temp_dir("atlas_cube");
+  write_png(dir / "atlas.png", 96, 64,
+            [](int x, int y) { return kSideColours[(y / 32) * 3 + x / 32]; });
+  std::ofstream(dir / "cube.mtl") << "newmtl atlas\nmap_Kd atlas.png\n";
+  const TriangleMesh box = generate_shape("box", {{"size_x", 2}, {"size_y", 2}, {"size_z", 2}});
+  auto side_of = [](const Vec3& n) {
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+    return 2 * axis + (n[axis] > 0 ? 1 : 0);
+  };
+  std::ofstream obj(dir / "cube.obj");
+  obj.precision(17);
+  obj << "mtllib cube.mtl\nusemtl atlas\n";
+  for (const Vec3& p : box.vertices) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  int vt = 0;
+  for (const Triangle& t : box.triangles) {
+    const Vec3 n =
+        (box.vertices[t[1]] - box.vertices[t[0]]).cross(box.vertices[t[2]] - box.vertices[t[0]]);
+    const int side = side_of(n), axis = side / 2;
+    const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+    // The island of this side: its cell of the atlas, a margin inside it.
+    const double cell_u = (side % 3) / 3.0, cell_v = 1.0 - (side / 3 + 1) / 2.0;
+    for (int v : t) {
+      const Vec3& p = box.vertices[v];
+      obj << "vt " << cell_u + (0.05 + 0.9 * (p[u_axis] + 1) / 2) / 3.0 << ' '
+          << cell_v + (0.05 + 0.9 * (p[v_axis] + 1) / 2) / 2.0 << '\n';
+    }
+    obj << "f " << t[0] + 1 << '/' << vt + 1 << ' ' << t[1] + 1 << '/' << vt + 2 << ' ' << t[2] + 1
+        << '/' << vt + 3 << '\n';
+    vt += 3;
+  }
+  obj.close();
+  const auto out = run_file(dir / "cube.obj", "2%");
+  ASSERT_TRUE(out.result.ok) << out.result.error;
+  if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
+  const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
+    // The side the point lies on; undecided within 0.1 of an edge.
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(p[k]) > std::abs(p[axis])) axis = k;
+    for (int k = 0; k < 3; ++k)
+      if (k != axis && std::abs(p[k]) > 0.9) return std::nullopt;
+    return kSideColours[2 * axis + (p[axis] > 0 ? 1 : 0)];
+  });
+  EXPECT_GT(checked.sampled, 50) << checked;
+  EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
+  std::cout << "[ colours  ] " << checked << "\n";
+}
+
+// A capped cylinder whose side is unwrapped around the axis (u wraps from 1 back to 0 on one
+// column) and whose caps are UV discs of their own: bands of colour by angle on the side, a
+// solid colour per cap.
+TEST(Texture, CappedCylinderAcrossItsUvSeamAndCaps) {
+  const auto dir = testing::fresh_temp_dir("capped");
+  constexpr Rgb kBands[4] = {{220, 40, 40}, {240, 160, 30}, {230, 220, 40}, {210, 80, 160}};
+  constexpr Rgb kTop{40, 180, 60}, kBottom{40, 70, 220};
+  write_png(dir / "atlas.png", 128, 128, [&](int x, int y) {
+    if (y < 64) return kBands[x / 32];
+    return x < 64 ? kTop : kBottom;
+  });
+  std::ofstream(dir / "can.mtl") << "newmtl label\nmap_Kd atlas.png\n";
+  const TriangleMesh can = generate_shape("capped_cylinder", {});
+  std::ofstream obj(dir / "can.obj");
+  obj.precision(17);
+  obj << "mtllib can.mtl\nusemtl label\n";
+  for (const Vec3& p : can.vertices) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  int vt = 0;
+  auto angle_u = [](const Vec3& p) {
+    return (std::atan2(p.y(), p.x()) + std::numbers::pi) / (2 * std::numbers::pi);
+  };
+  for (const Triangle& t : can.triangles) {
+    const Vec3 n =
+        (can.vertices[t[1]] - can.vertices[t[0]]).cross(can.vertices[t[2]] - can.vertices[t[0]]);
+    const bool cap = std::abs(n.normalized().z()) > 0.9;
+    double us[3];
+    for (int k = 0; k < 3; ++k) us[k] = angle_u(can.vertices[t[k]]);
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = can.vertices[t[k]];
+      if (cap) {
+        const double cu = n.z() > 0 ? 0.25 : 0.75;
+        obj << "vt " << cu + 0.2 * p.x() << ' ' << 0.25 + 0.2 * p.y() << '\n';
+      } else {
+        // The column that wraps: its corners at u near 0 go to u + 1, so it spans the seam.
+        double u = us[k];
+        const double top = std::max({us[0], us[1], us[2]});
+        if (top - u > 0.5) u += 1.0;
+        obj << "vt " << u << ' ' << 0.5 + 0.45 * (p.z() + 1) / 2 << '\n';
+      }
+    }
+    obj << "f " << t[0] + 1 << '/' << vt + 1 << ' ' << t[1] + 1 << '/' << vt + 2 << ' ' << t[2] + 1
+        << '/' << vt + 3 << '\n';
+    vt += 3;
+  }
+  obj.close();
+  const auto out = run_file(dir / "can.obj", "2%");
+  ASSERT_TRUE(out.result.ok) << out.result.error;
+  if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
+  const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
+    const double r = std::hypot(p.x(), p.y());
+    if (std::abs(p.z()) > 0.97) {  // a cap, away from its rim
+      if (r > 0.9) return std::nullopt;
+      return p.z() > 0 ? kTop : kBottom;
+    }
+    if (std::abs(p.z()) > 0.9 || r < 0.95) return std::nullopt;
+    const double band = 4 * angle_u(p);
+    if (std::abs(band - std::round(band)) < 0.08) return std::nullopt;  // a band boundary
+    return kBands[static_cast<int>(band) % 4];
+  });
+  EXPECT_GT(checked.sampled, 50) << checked;
+  EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
+  std::cout << "[ colours  ] " << checked << "\n";
+}
+
+// A PLY whose faces carry colours (by the side they face): printed as they are.
+TEST(Texture, PlyFaceColoursArePrinted) {
+  const auto dir = testing::fresh_temp_dir("ply_colours");
+  const TriangleMesh sphere = generate_shape("sphere", {{"subdivisions", 3}});
+  auto colour_of = [](const Vec3& n) {
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+    return kSideColours[2 * axis + (n[axis] > 0 ? 1 : 0)];
+  };
+  std::ofstream ply(dir / "ball.ply");
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << sphere.vertices.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
+      << sphere.triangles.size()
+      << "\nproperty list uchar int vertex_indices\nproperty uchar red\nproperty uchar green\n"
+         "property uchar blue\nend_header\n";
+  for (const Vec3& p : sphere.vertices) ply << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const Triangle& t : sphere.triangles) {
+    const Vec3 centre = (sphere.vertices[t[0]] + sphere.vertices[t[1]] + sphere.vertices[t[2]]) / 3;
+    const Rgb c = colour_of(centre);
+    ply << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << c.r << ' ' << c.g << ' ' << c.b
+        << '\n';
+  }
+  ply.close();
+  const auto out = run_file(dir / "ball.ply", "2%");
+  ASSERT_TRUE(out.result.ok) << out.result.error;
+  if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
+  const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
+    // The input face nearest p (brute force), unless a face of another colour is nearly as
+    // near (the printed boundary is only as sharp as the pixels).
+    double best = 1e300;
+    Rgb colour{0, 0, 0};
+    std::vector<std::pair<double, Rgb>> by_face;
+    for (const Triangle& t : sphere.triangles) {
+      const Vec3 centre =
+          (sphere.vertices[t[0]] + sphere.vertices[t[1]] + sphere.vertices[t[2]]) / 3;
+      const double d = testing::reference_triangle_distance(
+          p, sphere.vertices[t[0]], sphere.vertices[t[1]], sphere.vertices[t[2]]);
+      by_face.push_back({d, colour_of(centre)});
+      if (d < best) best = d, colour = by_face.back().second;
+    }
+    for (const auto& [d, c] : by_face)
+      if ((c.r != colour.r || c.g != colour.g || c.b != colour.b) && d < best + 0.04)
+        return std::nullopt;
+    return colour;
+  });
+  EXPECT_GT(checked.sampled, 50) << checked;
+  EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
+  std::cout << "[ colours  ] " << checked << "\n";
+}
+
+// A texture that does not exist: a warning naming the file and the material, and the pattern.
+TEST(Texture, MissingTextureIsAWarningAndThePatternIsPrinted) {
+  const auto dir = testing::fresh_temp_dir("missing_texture");
+  std::ofstream(dir / "tube.mtl") << "newmtl skin\nmap_Kd nowhere.png\n";
   const TriangleMesh tube = open_cylinder();
   std::ofstream obj(dir / "tube.obj");
-  obj.precision(17);
   obj << "mtllib tube.mtl\nusemtl skin\n";
   for (const Vec3& p : tube.vertices) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   for (const Vec3& p : tube.vertices)
     obj << "vt " << 0.5 * (p.x() + 1.0) << ' ' << 0.5 * p.z() << '\n';
-  for (const Triangle& t : tube.triangles) {
-    obj << "f";
-    for (int v : t) obj << ' ' << v + 1 << '/' << v + 1;
-    obj << '\n';
-  }
+  for (const Triangle& t : tube.triangles)
+    obj << "f " << t[0] + 1 << '/' << t[0] + 1 << ' ' << t[1] + 1 << '/' << t[1] + 1 << ' '
+        << t[2] + 1 << '/' << t[2] + 1 << '\n';
   obj.close();
-
-  const Registry& registry = builtin_registry();
-  auto settings = std::make_shared<RunSettings>();
-  settings->tolerance = parse_tolerance("1%");
-  settings->output_dir = dir / "out";
-  Pipeline pipeline(parse_pipeline_config(default_config_text(), "default.yaml", registry),
-                    registry);
-  const auto results = pipeline.run({dir / "tube.obj"}, settings);
-  ASSERT_TRUE(results.at(0).ok) << results.at(0).error;
-  const auto flat = nlohmann::json::parse(testing::read_text(dir / "out/tube/strips.json"));
-  ASSERT_FALSE(flat.at("strips").empty());
-  for (const auto& strip : flat.at("strips")) {
-    ASSERT_TRUE(strip.contains("uv"));
-    ASSERT_EQ(strip.at("uv").size(), strip.at("vertices3d").size());
-    for (std::size_t i = 0; i < strip.at("uv").size(); ++i) {
-      const double x = strip.at("vertices3d")[i][0], z = strip.at("vertices3d")[i][2];
-      EXPECT_NEAR(strip.at("uv")[i][0].get<double>(), 0.5 * (x + 1.0), 1e-6);
-      EXPECT_NEAR(strip.at("uv")[i][1].get<double>(), 0.5 * z, 1e-6);
-    }
-  }
-  const std::string pdf = testing::read_text(dir / "out/tube/pattern.pdf");
-  EXPECT_NE(pdf.find("/Subtype /Image"), std::string::npos) << "the texture is drawn";
-
-  // The SVG embeds the texture once and paints it per triangle and per tab edge: more
-  // clipped patches than the strips have triangles.
-  std::size_t triangles = 0;
-  for (const auto& strip : flat.at("strips")) triangles += strip.at("triangles").size();
-  std::size_t patches = 0;
-  std::vector<std::vector<Vec2>> flaps;  // of page 1
-  for (int page = 1; std::filesystem::exists(svg_name(dir / "out/tube", page)); ++page) {
-    const std::string svg = testing::read_text(svg_name(dir / "out/tube", page));
-    EXPECT_EQ(count(svg, "<image id=\"texture\""), 1) << page;
-    EXPECT_NE(svg.find("xlink:href=\"data:image/png;base64,iVBORw0KGgo"), std::string::npos);
-    patches += count(svg, "<clipPath id=\"texture-clip-");
-    EXPECT_EQ(count(svg, "<clipPath id=\"texture-clip-"),
-              count(svg, "<use xlink:href=\"#texture\" transform=\"matrix("));
-    if (page == 1) flaps = subpaths(layer(svg, "tabs"));
-  }
-  EXPECT_GT(patches, triangles) << "tabs carry the texture too";
-
-  // Rendered, the middle of a tab shows the checkerboard (green 0.3), not the grey tab
-  // fill (0.9) or white paper.
-  if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "pdftoppm not installed";
-  ASSERT_FALSE(flaps.empty());
-  constexpr double kDpi = 100;
-  const auto ppm = dir / "page";
-  ASSERT_EQ(std::system(("pdftoppm -r 100 -f 2 -l 2 -singlefile " +
-                         (dir / "out/tube/pattern.pdf").string() + " " + ppm.string())
-                            .c_str()),
-            0);
-  const Image page = read_ppm(ppm.string() + ".ppm");
-  ASSERT_GT(page.width, 0);
-  int sampled = 0, textured = 0;
-  for (const auto& flap : flaps) {
-    Vec2 centre = Vec2::Zero();
-    for (const Vec2& p : flap) centre += p / static_cast<double>(flap.size());
-    if (!inside(centre, flap)) continue;
-    const int x = static_cast<int>(centre.x() / 25.4 * kDpi);
-    const int y = static_cast<int>(centre.y() / 25.4 * kDpi);
-    if (x < 0 || y < 0 || x >= page.width || y >= page.height) continue;
-    const int green = page.pixels[3 * (y * page.width + x) + 1];
-    ++sampled;
-    if (std::abs(green - 77) < 30) ++textured;
-  }
-  ASSERT_GT(sampled, 0);
-  EXPECT_GE(textured, (4 * sampled + 4) / 5) << textured << " of " << sampled;
+  const auto out = run_file(dir / "tube.obj", "2%");
+  ASSERT_TRUE(out.result.ok) << out.result.error;
+  EXPECT_TRUE(std::filesystem::exists(out.dir / "pattern.pdf"));
+  const std::string notes = out.report.at("notes").dump();
+  EXPECT_NE(notes.find("nowhere.png"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("'skin'"), std::string::npos) << notes;
 }
 
 }  // namespace

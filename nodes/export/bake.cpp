@@ -1,0 +1,219 @@
+#include "nodes/export/bake.h"
+
+#include <cairo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <span>
+
+namespace papercraft {
+namespace {
+
+std::uint32_t argb(const Vec3& rgb) {
+  auto channel = [](double c) {
+    return static_cast<std::uint32_t>(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
+  };
+  return 0xff000000u | (channel(rgb.x()) << 16) | (channel(rgb.y()) << 8) | channel(rgb.z());
+}
+
+// Fills the pixels of `image` whose centres lie in the triangle `corners` (page mm, either
+// orientation) with the surface colour nearest `point(weights)`.
+template <class Point>
+void fill_triangle(BakedImage& image, const std::array<Vec2, 3>& corners, Point point,
+                   const SurfaceSampler& sampler, int* hint,
+                   const std::vector<Vec2>* clip = nullptr) {
+  const Vec2 a = corners[0], b = corners[1], c = corners[2];
+  const double area = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+  if (std::abs(area) < 1e-18) return;
+  Vec2 lo = a.cwiseMin(b).cwiseMin(c), hi = a.cwiseMax(b).cwiseMax(c);
+  if (clip) {
+    lo = Vec2::Constant(1e300), hi = -lo;
+    for (const Vec2& q : *clip) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  }
+  const int x0 =
+      std::max(0, static_cast<int>(std::floor((lo.x() - image.origin.x()) / image.pixel_mm)));
+  const int x1 = std::min(
+      image.width - 1, static_cast<int>(std::floor((hi.x() - image.origin.x()) / image.pixel_mm)));
+  const int y0 =
+      std::max(0, static_cast<int>(std::floor((lo.y() - image.origin.y()) / image.pixel_mm)));
+  const int y1 = std::min(
+      image.height - 1, static_cast<int>(std::floor((hi.y() - image.origin.y()) / image.pixel_mm)));
+  auto inside_clip = [&](const Vec2& p) {
+    if (!clip) return true;
+    bool inside = false;
+    for (std::size_t i = 0, j = clip->size() - 1; i < clip->size(); j = i++) {
+      const Vec2 &u = (*clip)[i], &v = (*clip)[j];
+      if ((u.y() > p.y()) != (v.y() > p.y()) &&
+          p.x() < (v.x() - u.x()) * (p.y() - u.y()) / (v.y() - u.y()) + u.x())
+        inside = !inside;
+    }
+    return inside;
+  };
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      std::uint32_t& pixel = image.argb[std::size_t(y) * image.width + x];
+      if (pixel != 0) continue;
+      const Vec2 p = image.origin + Vec2((x + 0.5) * image.pixel_mm, (y + 0.5) * image.pixel_mm);
+      // Barycentric weights; outside the triangle only for a clipped tab (extrapolated).
+      const double wb = ((p - a).x() * (c - a).y() - (p - a).y() * (c - a).x()) / area;
+      const double wc = ((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x()) / area;
+      const double wa = 1 - wb - wc;
+      if (clip ? !inside_clip(p) : (wa < -1e-9 || wb < -1e-9 || wc < -1e-9)) continue;
+      Vec3 rgb;
+      if (sampler.colour(point(wa, wb, wc), hint, &rgb)) pixel = argb(rgb);
+    }
+  }
+}
+
+// Grows the painted area by `rings` pixels, each new pixel taking a painted neighbour's colour.
+void bleed(BakedImage& image, int rings) {
+  const int w = image.width, h = image.height;
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<std::uint32_t> next = image.argb;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        if (image.argb[std::size_t(y) * w + x] != 0) continue;
+        for (int k = 0; k < 8; ++k) {
+          static constexpr int dx[8] = {-1, 1, 0, 0, -1, 1, -1, 1};
+          static constexpr int dy[8] = {0, 0, -1, 1, -1, -1, 1, 1};
+          const int nx = x + dx[k], ny = y + dy[k];
+          if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+          const std::uint32_t value = image.argb[std::size_t(ny) * w + nx];
+          if (value != 0) {
+            next[std::size_t(y) * w + x] = value;
+            break;
+          }
+        }
+      }
+    image.argb = std::move(next);
+  }
+}
+
+}  // namespace
+
+SurfaceSampler::SurfaceSampler(const Mesh& input, const SurfaceAppearance& appearance,
+                               std::vector<std::shared_ptr<const Image>> images)
+    : bvh_(to_triangle_mesh(input)), images_(std::move(images)) {
+  const auto& triangles = bvh_.mesh().triangles;
+  const std::size_t faces = triangles.size();
+  const bool textured =
+      appearance.face_uv.size() == faces && appearance.face_material.size() == faces;
+  const bool coloured = appearance.face_colour.size() == faces;
+  if (appearance.face_vertices.size() != faces || (!textured && !coloured)) return;
+  material_.assign(faces, -1);
+  if (textured) uv_.resize(faces);
+  if (coloured) colour_.resize(faces);
+  for (std::size_t f = 0; f < faces; ++f) {
+    for (int i = 0; i < 3; ++i) {
+      // The appearance's corner at this triangle's i-th vertex.
+      int k = 0;
+      while (k < 2 && appearance.face_vertices[f][k] != triangles[f][i]) ++k;
+      if (textured) uv_[f][i] = appearance.face_uv[f][k];
+      if (coloured) colour_[f][i] = appearance.face_colour[f][k];
+    }
+    if (textured) material_[f] = appearance.face_material[f];
+  }
+  bool any_image = false;
+  for (const auto& image : images_) any_image = any_image || image != nullptr;
+  empty_ = !coloured && !(textured && any_image);
+}
+
+bool SurfaceSampler::colour(const Vec3& p, int* hint, Vec3* rgb) const {
+  if (empty_) return false;
+  const BvhClosestHit hit =
+      *hint >= 0 ? bvh_.closest(p, std::span<const int>(hint, 1)) : bvh_.closest(p);
+  if (!hit.found()) return false;
+  *hint = hit.triangle;
+  const int t = hit.triangle;
+  const Vec3& w = hit.barycentric;
+  if (!uv_.empty() && material_[t] >= 0 &&
+      static_cast<std::size_t>(material_[t]) < images_.size() && images_[material_[t]]) {
+    const Vec2 uv = w.x() * uv_[t][0] + w.y() * uv_[t][1] + w.z() * uv_[t][2];
+    *rgb = images_[material_[t]]->sample(uv);
+    return true;
+  }
+  if (!colour_.empty()) {
+    *rgb = w.x() * colour_[t][0] + w.y() * colour_[t][1] + w.z() * colour_[t][2];
+    return true;
+  }
+  return false;
+}
+
+std::vector<BakedImage> bake_page(const Page& page, const std::map<int, const FlatStrip*>& strips,
+                                  const SurfaceSampler& sampler, const BakeOptions& options) {
+  std::vector<BakedImage> images;
+  const double pixel = 25.4 / options.dpi;
+  const int rings = static_cast<int>(std::ceil(options.bleed_mm / pixel));
+  for (const PlacedPiece& piece : page.pieces) {
+    BakedImage image;
+    const auto found = strips.find(piece.strip_id);
+    if (found == strips.end() || sampler.empty() || piece.triangles.empty()) {
+      images.push_back(std::move(image));
+      continue;
+    }
+    const FlatStrip& strip = *found->second;
+    Vec2 lo = Vec2::Constant(1e300), hi = -lo;
+    for (const Vec2& v : piece.vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    for (const Tab& tab : piece.tabs)
+      for (const auto& flap : tab.flaps)
+        for (const Vec2& v : flap) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    image.pixel_mm = pixel;
+    image.origin = lo - Vec2::Constant((rings + 1) * pixel);
+    image.width = static_cast<int>(std::ceil((hi.x() - image.origin.x()) / pixel)) + rings + 1;
+    image.height = static_cast<int>(std::ceil((hi.y() - image.origin.y()) / pixel)) + rings + 1;
+    image.argb.assign(std::size_t(image.width) * image.height, 0);
+    int hint = -1;
+    for (const Triangle& t : piece.triangles) {
+      const std::array<Vec2, 3> corners{piece.vertices[t[0]], piece.vertices[t[1]],
+                                        piece.vertices[t[2]]};
+      const Vec3 &pa = strip.vertices3d[piece.strip_vertex[t[0]]],
+                 &pb = strip.vertices3d[piece.strip_vertex[t[1]]],
+                 &pc = strip.vertices3d[piece.strip_vertex[t[2]]];
+      fill_triangle(
+          image, corners,
+          [&](double wa, double wb, double wc) { return Vec3(wa * pa + wb * pb + wc * pc); },
+          sampler, &hint);
+    }
+    if (options.tab_texture) {
+      for (const Tab& tab : piece.tabs)
+        for (const TexturePatch& patch : tab.texture) {
+          if (patch.clip.size() < 3) continue;
+          fill_triangle(
+              image, patch.corners,
+              [&](double wa, double wb, double wc) {
+                return Vec3(wa * patch.points3d[0] + wb * patch.points3d[1] +
+                            wc * patch.points3d[2]);
+              },
+              sampler, &hint, &patch.clip);
+        }
+    }
+    bleed(image, rings);
+    images.push_back(std::move(image));
+  }
+  return images;
+}
+
+std::string png_bytes(const BakedImage& image) {
+  std::string bytes;
+  if (image.width <= 0 || image.height <= 0) return bytes;
+  const int stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32, image.width);
+  std::vector<unsigned char> data(std::size_t(stride) * image.height);
+  for (int y = 0; y < image.height; ++y)
+    std::memcpy(&data[std::size_t(y) * stride], &image.argb[std::size_t(y) * image.width],
+                std::size_t(image.width) * 4);
+  cairo_surface_t* surface = cairo_image_surface_create_for_data(data.data(), CAIRO_FORMAT_ARGB32,
+                                                                 image.width, image.height, stride);
+  cairo_surface_write_to_png_stream(
+      surface,
+      [](void* closure, const unsigned char* chunk, unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(chunk), length);
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &bytes);
+  cairo_surface_destroy(surface);
+  return bytes;
+}
+
+}  // namespace papercraft

@@ -1,0 +1,30 @@
+#pragma once
+// Texture images for the print: PNG through cairo, JPEG through libjpeg(-turbo). The size is
+// read from the file's header first, so an image too large to be worth reading is refused
+// before any pixel is decoded.
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "core/triangle_mesh.h"
+
+namespace papercraft {
+
+/// 8-bit RGB pixels, row by row from the top.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;
+
+  /// Bilinear sample at texture coordinates (u, v) in [0, 1] (v up, wrapping around as OBJ
+  /// textures repeat); linear 0..1 RGB.
+  Vec3 sample(const Vec2& uv) const;
+};
+
+/// Reads a .png or .jpg/.jpeg image.
+/// \throws IOException naming the file when it is missing, unreadable, of another format, or
+///   larger than max_pixels (width * height).
+Image load_image(const std::filesystem::path& path, long max_pixels);
+
+}  // namespace papercraft
