@@ -54,6 +54,11 @@ struct ModelRecord {
 
   /// export: the largest distance of an input vertex to the approximation (error.ply).
   double max_vertex_distance = 0.0;
+  /// export: the print images baked from the input's textures or colours (report.json
+  /// "texture"); 0 when nothing was baked.
+  double bake_seconds = 0.0;
+  long baked_pixels = 0;
+  int baked_images = 0;
 
   /// Repairs made by the loader, warnings of any stage (report.json "notes").
   std::vector<std::string> notes;

@@ -6,7 +6,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <span>
+#include <vector>
+
+#include "core/closest_point.h"
 
 namespace papercraft {
 namespace {
@@ -17,6 +21,12 @@ std::uint32_t argb(const Vec3& rgb) {
   };
   return 0xff000000u | (channel(rgb.x()) << 16) | (channel(rgb.y()) << 8) | channel(rgb.z());
 }
+
+// Pixels are sampled in square tiles: the nearest triangle of every point of a tile is among
+// the few triangles near the tile's centre (SurfaceSampler::nearest_candidates), so one
+// tree search serves the whole tile; a tile with too many candidates searches per pixel.
+constexpr int kTile = 8;
+constexpr std::size_t kTileCandidates = 32;
 
 // Fills the pixels of `image` whose centres lie in the triangle `corners` (page mm, either
 // orientation) with the surface colour nearest `point(weights)`.
@@ -41,7 +51,6 @@ void fill_triangle(BakedImage& image, const std::array<Vec2, 3>& corners, Point 
   const int y1 = std::min(
       image.height - 1, static_cast<int>(std::floor((hi.y() - image.origin.y()) / image.pixel_mm)));
   auto inside_clip = [&](const Vec2& p) {
-    if (!clip) return true;
     bool inside = false;
     for (std::size_t i = 0, j = clip->size() - 1; i < clip->size(); j = i++) {
       const Vec2 &u = (*clip)[i], &v = (*clip)[j];
@@ -51,43 +60,118 @@ void fill_triangle(BakedImage& image, const std::array<Vec2, 3>& corners, Point 
     }
     return inside;
   };
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      std::uint32_t& pixel = image.argb[std::size_t(y) * image.width + x];
-      if (pixel != 0) continue;
-      const Vec2 p = image.origin + Vec2((x + 0.5) * image.pixel_mm, (y + 0.5) * image.pixel_mm);
-      // Barycentric weights; outside the triangle only for a clipped tab (extrapolated).
-      const double wb = ((p - a).x() * (c - a).y() - (p - a).y() * (c - a).x()) / area;
-      const double wc = ((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x()) / area;
-      const double wa = 1 - wb - wc;
-      if (clip ? !inside_clip(p) : (wa < -1e-9 || wb < -1e-9 || wc < -1e-9)) continue;
+  struct Sample {
+    std::uint32_t* pixel;
+    Vec3 point;
+  };
+  std::vector<Sample> tile;
+  std::vector<SurfaceSampler::Candidate> candidates;
+  // The columns of row y that can hold the triangle's pixels (a pixel either side of the exact
+  // span, so the per-pixel test below decides): each barycentric weight is linear along a row.
+  auto row_span = [&](int y) -> std::pair<int, int> {
+    if (clip) return {x0, x1};
+    const double py = image.origin.y() + (y + 0.5) * image.pixel_mm;
+    double lo_x = -1e300, hi_x = 1e300;
+    // weight(px) = slope * px + offset for wb, wc and wa = 1 - wb - wc.
+    const double sb = (c - a).y() / area, ob = (-a.x() * (c - a).y() - (py - a.y()) * (c - a).x()) / area;
+    const double sc = -(b - a).y() / area, oc = ((b - a).x() * (py - a.y()) + a.x() * (b - a).y()) / area;
+    const double slopes[3] = {sb, sc, -sb - sc}, offsets[3] = {ob, oc, 1 - ob - oc};
+    for (int k = 0; k < 3; ++k) {
+      if (slopes[k] > 0) lo_x = std::max(lo_x, -offsets[k] / slopes[k]);
+      else if (slopes[k] < 0) hi_x = std::min(hi_x, -offsets[k] / slopes[k]);
+      else if (offsets[k] < -1e-9) return {1, 0};
+    }
+    if (lo_x > hi_x) return {1, 0};
+    const double first = (lo_x - image.origin.x()) / image.pixel_mm - 0.5;
+    const double last = (hi_x - image.origin.x()) / image.pixel_mm - 0.5;
+    return {std::max(x0, static_cast<int>(std::max(-1e9, std::floor(first))) - 1),
+            std::min(x1, static_cast<int>(std::min(1e9, std::ceil(last))) + 1)};
+  };
+  std::array<std::pair<int, int>, kTile> spans;
+  for (int ty = y0; ty <= y1; ty += kTile) {
+    const int rows = std::min(y1, ty + kTile - 1) - ty + 1;
+    int from = x1 + 1, to = x0 - 1;
+    for (int r = 0; r < rows; ++r) {
+      spans[r] = row_span(ty + r);
+      if (spans[r].first <= spans[r].second)
+        from = std::min(from, spans[r].first), to = std::max(to, spans[r].second);
+    }
+    for (int tx = from; tx <= to; tx += kTile) {
+      tile.clear();
+      for (int y = ty; y < ty + rows; ++y) {
+        const auto [first, last] = spans[y - ty];
+        for (int x = std::max(tx, first); x <= std::min(last, tx + kTile - 1); ++x) {
+          std::uint32_t& pixel = image.argb[std::size_t(y) * image.width + x];
+          if (pixel != 0) continue;
+          const Vec2 p =
+              image.origin + Vec2((x + 0.5) * image.pixel_mm, (y + 0.5) * image.pixel_mm);
+          // Barycentric weights; outside the triangle only for a clipped tab (extrapolated).
+          const double wb = ((p - a).x() * (c - a).y() - (p - a).y() * (c - a).x()) / area;
+          const double wc = ((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x()) / area;
+          const double wa = 1 - wb - wc;
+          if (clip ? !inside_clip(p) : (wa < -1e-9 || wb < -1e-9 || wc < -1e-9)) continue;
+          tile.push_back({&pixel, point(wa, wb, wc)});
+        }
+      }
+      if (tile.empty()) continue;
       Vec3 rgb;
-      if (sampler.colour(point(wa, wb, wc), hint, &rgb)) pixel = argb(rgb);
+      bool shared = false;
+      Vec3 centre = Vec3::Zero();
+      if (tile.size() > 2) {
+        for (const Sample& sample : tile) centre += sample.point;
+        centre /= static_cast<double>(tile.size());
+        double radius = 0;
+        for (const Sample& sample : tile) radius = std::max(radius, (sample.point - centre).norm());
+        shared = sampler.nearest_candidates(centre, radius, kTileCandidates, candidates);
+      }
+      for (const Sample& sample : tile) {
+        const bool found = shared ? sampler.colour_among(sample.point, centre, candidates, &rgb)
+                                  : sampler.colour(sample.point, hint, &rgb);
+        if (found) *sample.pixel = argb(rgb);
+      }
     }
   }
 }
 
-// Grows the painted area by `rings` pixels, each new pixel taking a painted neighbour's colour.
+// Grows the painted area by `rings` pixels, each new pixel taking a painted neighbour's colour
+// (the first of left, right, up, down, then the diagonals, painted before its ring). Only the
+// pixels along the edge of the painted area are visited.
 void bleed(BakedImage& image, int rings) {
+  static constexpr int dx[8] = {-1, 1, 0, 0, -1, 1, -1, 1};
+  static constexpr int dy[8] = {0, 0, -1, 1, -1, -1, 1, 1};
   const int w = image.width, h = image.height;
-  for (int ring = 0; ring < rings; ++ring) {
-    std::vector<std::uint32_t> next = image.argb;
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        if (image.argb[std::size_t(y) * w + x] != 0) continue;
-        for (int k = 0; k < 8; ++k) {
-          static constexpr int dx[8] = {-1, 1, 0, 0, -1, 1, -1, 1};
-          static constexpr int dy[8] = {0, 0, -1, 1, -1, -1, 1, 1};
-          const int nx = x + dx[k], ny = y + dy[k];
-          if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-          const std::uint32_t value = image.argb[std::size_t(ny) * w + nx];
-          if (value != 0) {
-            next[std::size_t(y) * w + x] = value;
-            break;
-          }
+  auto at = [&](int x, int y) -> std::uint32_t& { return image.argb[std::size_t(y) * w + x]; };
+  // The unpainted neighbours of the pixels painted last, each once.
+  std::vector<char> queued(image.argb.size(), 0);
+  std::vector<std::pair<int, int>> frontier;
+  auto queue_neighbours = [&](int x, int y) {
+    for (int k = 0; k < 8; ++k) {
+      const int nx = x + dx[k], ny = y + dy[k];
+      if (nx < 0 || ny < 0 || nx >= w || ny >= h || at(nx, ny) != 0) continue;
+      char& mark = queued[std::size_t(ny) * w + nx];
+      if (!mark) mark = 1, frontier.push_back({nx, ny});
+    }
+  };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (at(x, y) != 0) queue_neighbours(x, y);
+  std::vector<std::pair<std::uint32_t*, std::uint32_t>> painted;
+  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
+    painted.clear();
+    for (const auto& [x, y] : frontier) {
+      for (int k = 0; k < 8; ++k) {
+        const int nx = x + dx[k], ny = y + dy[k];
+        if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
+        if (const std::uint32_t value = at(nx, ny); value != 0) {
+          painted.push_back({&at(x, y), value});
+          break;
         }
       }
-    image.argb = std::move(next);
+    }
+    for (const auto& [pixel, value] : painted) *pixel = value;
+    std::vector<std::pair<int, int>> last;
+    last.swap(frontier);
+    for (const auto& [x, y] : last) queue_neighbours(x, y);
   }
 }
 
@@ -126,8 +210,59 @@ bool SurfaceSampler::colour(const Vec3& p, int* hint, Vec3* rgb) const {
       *hint >= 0 ? bvh_.closest(p, std::span<const int>(hint, 1)) : bvh_.closest(p);
   if (!hit.found()) return false;
   *hint = hit.triangle;
-  const int t = hit.triangle;
-  const Vec3& w = hit.barycentric;
+  return shade(hit.triangle, hit.barycentric, rgb);
+}
+
+bool SurfaceSampler::nearest_candidates(const Vec3& centre, double radius, std::size_t limit,
+                                        std::vector<Candidate>& out) const {
+  out.clear();
+  const BvhClosestHit hit = bvh_.closest(centre);
+  if (!hit.found()) return false;
+  const double reach = hit.distance + 2 * radius;
+  Aabb box;
+  box.extend(centre - Vec3::Constant(reach));
+  box.extend(centre + Vec3::Constant(reach));
+  thread_local std::vector<int> meeting;  // reused: one search per tile
+  meeting.clear();
+  if (!bvh_.triangles_meeting(box, meeting, 4 * limit)) return false;
+  for (const int t : meeting) {
+    const double d = std::sqrt(bvh_.squared_distance_to_triangle(centre, t));
+    if (d <= reach) out.push_back({d, t});
+  }
+  if (out.size() > limit) return false;
+  std::sort(out.begin(), out.end(), [](const Candidate& x, const Candidate& y) {
+    return x.distance < y.distance || (x.distance == y.distance && x.triangle < y.triangle);
+  });
+  return true;
+}
+
+bool SurfaceSampler::colour_among(const Vec3& p, const Vec3& centre,
+                                  std::span<const Candidate> candidates, Vec3* rgb) const {
+  if (empty_ || candidates.empty()) return false;
+  const TriangleMesh& mesh = bvh_.mesh();
+  const double offset = (p - centre).norm();
+  double best_squared = std::numeric_limits<double>::infinity();
+  int best = -1;
+  Vec3 weights = Vec3::Zero();
+  for (const Candidate& candidate : candidates) {
+    // d(p, t) >= d(centre, t) - |p - centre|: the rest are farther than the best.
+    const double lower = candidate.distance - offset;
+    if (lower > 0 && lower * lower > best_squared * (1 + 1e-9)) break;
+    const int t = candidate.triangle;
+    const Triangle& tri = mesh.triangles[t];
+    const TriangleClosestPoint c = closest_point_on_triangle(
+        p, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
+    if (c.squared_distance < best_squared ||
+        (c.squared_distance == best_squared && t < best)) {
+      best_squared = c.squared_distance;
+      best = t;
+      weights = c.barycentric;
+    }
+  }
+  return shade(best, weights, rgb);
+}
+
+bool SurfaceSampler::shade(int t, const Vec3& w, Vec3* rgb) const {
   if (!uv_.empty() && material_[t] >= 0 &&
       static_cast<std::size_t>(material_[t]) < images_.size() && images_[material_[t]]) {
     const Vec2 uv = w.x() * uv_[t][0] + w.y() * uv_[t][1] + w.z() * uv_[t][2];

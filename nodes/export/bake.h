@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,9 +51,30 @@ class SurfaceSampler {
   /// `hint` (a triangle index, or -1) warm-starts the search and is updated.
   bool colour(const Vec3& p, int* hint, Vec3* rgb) const;
 
+  /// A triangle that can be nearest to points near a centre, and its distance to the centre.
+  struct Candidate {
+    double distance;
+    int triangle;
+  };
+
+  /// The triangles that can be nearest to some point within `radius` of `centre`, nearest
+  /// first, when there are at most `limit` of them (else false): those within d + 2 radius of
+  /// `centre`, d its distance to the surface (a point q within radius has its nearest triangle
+  /// within d(q) + radius <= d + 2 radius of centre).
+  bool nearest_candidates(const Vec3& centre, double radius, std::size_t limit,
+                          std::vector<Candidate>& out) const;
+
+  /// colour(p), the nearest triangle searched among `candidates` only (from
+  /// nearest_candidates(centre, r) with |p - centre| <= r; ties go to the lowest index, as in
+  /// colour).
+  bool colour_among(const Vec3& p, const Vec3& centre, std::span<const Candidate> candidates,
+                    Vec3* rgb) const;
+
   bool empty() const { return empty_; }
 
  private:
+  bool shade(int triangle, const Vec3& barycentric, Vec3* rgb) const;
+
   TriangleBvh bvh_;
   // Per BVH triangle, in its corner order: material, uvs, colours.
   std::vector<int> material_;

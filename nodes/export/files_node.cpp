@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -121,6 +122,9 @@ nlohmann::json model_report(const ModelRun& model) {
                       {"seams_without_tab", record.seams_without_tab},
                       {"smallest_text_mm", record.smallest_text_mm},
                       {"overlapping_text", record.overlapping_text}};
+  report["texture"] = {{"baked_images", record.baked_images},
+                       {"baked_pixels", record.baked_pixels},
+                       {"bake_seconds", record.bake_seconds}};
   nlohmann::json nodes = nlohmann::json::object();
   for (std::size_t i = 0; i < model.node_labels.size(); ++i) {
     nodes[model.node_labels[i].first] = {
@@ -209,6 +213,7 @@ void register_export_files(Registry& registry) {
              std::vector<std::vector<BakedImage>> images;
              if (strips.model && strips.model->appearance && !strips.model->appearance->empty() &&
                  (wants(formats, "pdf") || wants(formats, "svg"))) {
+               const auto start = std::chrono::steady_clock::now();
                const SurfaceSampler sampler(
                    *strips.model->mesh, *strips.model->appearance,
                    material_images(model, *strips.model->appearance, max_texture_pixels));
@@ -220,6 +225,21 @@ void register_export_files(Registry& registry) {
                    images[page] = bake_page(layout.pages[page], by_id, sampler, bake);
                  });
                  page_style.images = &images;
+                 long pixels = 0;
+                 int count = 0;
+                 for (const auto& page : images)
+                   for (const BakedImage& image : page) {
+                     pixels += static_cast<long>(image.width) * image.height;
+                     ++count;
+                   }
+                 const double seconds = std::chrono::duration<double>(
+                                            std::chrono::steady_clock::now() - start)
+                                            .count();
+                 model.update([=](ModelRecord& record) {
+                   record.bake_seconds = seconds;
+                   record.baked_pixels = pixels;
+                   record.baked_images = count;
+                 });
                }
              }
              if (wants(formats, "json"))
