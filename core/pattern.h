@@ -25,6 +25,8 @@ struct Label {
   Vec2 position = Vec2::Zero();
   double angle_degrees = 0.0;
   double size_mm = 2.5;
+  /// Printed beside its piece, on the paper around it (no room on the piece).
+  bool outside = false;
 };
 
 enum class FoldKind { Mountain, Valley };

@@ -194,6 +194,25 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
   auto fits = [&](const std::array<Vec2, 4>& candidate) {
     return box_on_piece(candidate, shapes) && clear(candidate);
   };
+  // Off the piece: the box meets none of its triangles and tabs (text printed beside it).
+  std::vector<std::vector<Vec2>> flaps;
+  for (const Flap& flap : piece.flaps) {
+    if (flap.base.size() < 2 || flap.outer.empty()) continue;
+    flaps.emplace_back(flap.base.rbegin(), flap.base.rend());
+    flaps.back().insert(flaps.back().end(), flap.outer.begin(), flap.outer.end());
+  }
+  auto fits_outside = [&](const std::array<Vec2, 4>& candidate) {
+    if (!clear(candidate)) return false;
+    for (const auto& t : shapes.triangles)
+      if (convex_overlap(candidate.data(), 4, t.data(), 3, 0.0)) return false;
+    for (const auto& flap : flaps) {
+      for (std::size_t i = 0; i < flap.size(); ++i)
+        if (segment_crosses(flap[i], flap[(i + 1) % flap.size()], candidate)) return false;
+      for (const Vec2& corner : candidate)
+        if (point_in_polygon(corner, flap)) return false;
+    }
+    return true;
+  };
   // The number first: at the best spot, shrunk (not below the smallest text) until it lies
   // clear on the piece; else at the incentres of the other roomiest triangles.
   piece.number = piece_number(data, piece, box, options);
@@ -225,6 +244,34 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       break;
     }
     if (size <= smallest) break;
+  }
+  if (!number_placed) {
+    // Beside the piece: at a gap outside the middle of each of its longest cut edges.
+    std::vector<std::pair<double, std::array<Vec2, 2>>> edges;
+    for (const auto& line : lines) edges.push_back({(line[1] - line[0]).norm(), line});
+    std::stable_sort(edges.begin(), edges.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    if (edges.size() > 24) edges.resize(24);
+    const double size = std::max(piece.number->size, smallest);
+    for (const auto& [length, line] : edges) {
+      if (number_placed || length <= 0) continue;
+      const Vec2 along = (line[1] - line[0]) / length, middle = 0.5 * (line[0] + line[1]);
+      for (double side : {1.0, -1.0}) {
+        for (double gap : {0.6, 1.5, 3.0}) {
+          const Vec2 centre = middle + side * Vec2(-along.y(), along.x()) * (kHalfLineEm * size + gap);
+          const auto candidate = text_box(centre, along, size, piece.number->text.size());
+          if (!fits_outside(candidate)) continue;
+          piece.number->position = centre;
+          piece.number->direction = along;
+          piece.number->size = size;
+          piece.number->outside = true;
+          taken.push_back(candidate);
+          number_placed = true;
+          break;
+        }
+        if (number_placed) break;
+      }
+    }
   }
   if (!number_placed) {
     piece.number->size = std::max(piece.number->size, smallest);
@@ -321,6 +368,35 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
           break;
         }
       }
+    }
+    // Beside the seam, outside the piece: read while cutting, and the other piece's label
+    // names the seam after.
+    for (double size : sizes) {
+      // Beyond this side's tab too, where it carries one.
+      const double beyond_tab = options.tab_width_mm + 1.0;
+      for (double gap : {0.6, 1.2, 2.0, 3.0, beyond_tab, beyond_tab + 2.0}) {
+        for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9}) {
+          if (placed) break;
+          Vec2 along;
+          const Vec2 on_edge = point_at(fraction * total, &along);
+          for (const Vec2& direction :
+               {along, chord.norm() > 1e-9 ? Vec2(chord.normalized()) : along}) {
+            const Vec2 outward(along.y(), -along.x());
+            const Vec2 centre = on_edge + outward * (kHalfLineEm * size + gap);
+            const auto candidate = text_box(centre, direction, size, label.text.size());
+            if (!fits_outside(candidate)) continue;
+            label.position = centre;
+            label.direction = direction;
+            label.size = size;
+            label.outside = true;
+            taken.push_back(candidate);
+            placed = true;
+            break;
+          }
+        }
+        if (placed) break;
+      }
+      if (placed) break;
     }
     if (!placed) {
       label.size = std::max(label.size, smallest);

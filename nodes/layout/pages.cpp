@@ -54,6 +54,7 @@ using layout_internal::piece_folds;
 using layout_internal::piece_loops;
 using layout_internal::piece_name;
 using layout_internal::piece_number;
+using layout_internal::text_box;
 using layout_internal::piece_points;
 using layout_internal::PieceEdge;
 using layout_internal::PieceLabel;
@@ -233,10 +234,23 @@ struct Orientation {
   bool fits = true;
 };
 
+// The boxes of the texts printed beside the piece (PieceLabel::outside).
+std::vector<std::array<Vec2, 4>> outside_text(const Piece& piece) {
+  std::vector<std::array<Vec2, 4>> boxes;
+  for (const PieceLabel& label : piece.labels)
+    if (label.outside)
+      boxes.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
+  if (piece.number && piece.number->outside)
+    boxes.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                             piece.number->text.size()));
+  return boxes;
+}
+
 Orientation orient_piece(const StripData& data, const Piece& piece, const Vec2& area) {
   std::vector<Vec2> points = piece_points(data, piece.triangles);
   for (const Flap& flap : piece.flaps)
     points.insert(points.end(), flap.outer.begin(), flap.outer.end());
+  for (const auto& box : outside_text(piece)) points.insert(points.end(), box.begin(), box.end());
   Orientation o;
   o.box = tightest_box(convex_hull(points), area.x(), area.y(), &o.fits);
   return o;
@@ -345,10 +359,11 @@ PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const Orie
       placed.marks.push_back({to_page(part.a), to_page(part.b)});
   for (const PieceLabel& label : piece.labels)
     placed.labels.push_back(
-        {label.text, to_page(label.position), direction_degrees(label.direction), label.size});
+        {label.text, to_page(label.position), direction_degrees(label.direction), label.size,
+         label.outside});
   const PieceLabel number = piece.number ? *piece.number : piece_number(data, piece, box, options);
   placed.number = {number.text, to_page(number.position), direction_degrees(number.direction),
-                   number.size};
+                   number.size, number.outside};
   return placed;
 }
 
@@ -518,8 +533,12 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   std::vector<Vec2> sizes;
   for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
     orientations.push_back(orient_piece(p.strips[pieces[i].strip], pieces[i], p.area));
+    arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, orientations.back().box, options,
+                   warnings);
+    // Text printed beside the piece takes paper too.
+    if (!outside_text(pieces[i]).empty())
+      orientations.back() = orient_piece(p.strips[pieces[i].strip], pieces[i], p.area);
     const Orientation& o = orientations.back();
-    arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, o.box, options, warnings);
     if (o.fits && o.box.size.minCoeff() > 0) {
       packed.push_back(i);
       sizes.push_back(o.box.size);
@@ -562,6 +581,8 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
         shape.convex.push_back(convex_hull(outline));
       }
       for (const auto& mark : pieces[i].marks) shape.convex.push_back({mark[0], mark[1]});
+      for (const auto& box : outside_text(pieces[i]))
+        shape.convex.push_back(std::vector<Vec2>(box.begin(), box.end()));
       shapes.push_back(std::move(shape));
     }
     NestOptions nest;

@@ -56,6 +56,9 @@ struct PieceLabel {
   Vec2 direction;
   double size;
   int chain = -1;  // the seam chain it names
+  /// Printed beside the piece, on the paper around it, where the piece has no room for it
+  /// (nesting keeps other pieces off it).
+  bool outside = false;
 };
 
 /// The triangles of a strip printed as one piece of paper (the whole strip or part of a split).

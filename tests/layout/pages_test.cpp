@@ -235,6 +235,15 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
         boxes.push_back(label_box(label));
         names.push_back(label.text);
         const auto& box = boxes.back();
+        if (label.outside) {
+          // Printed beside its piece: on no piece of the page.
+          for (const PlacedPiece& other : page.pieces)
+            for (int i = 0; i < 4; ++i)
+              EXPECT_FALSE(on_piece(box[i], other))
+                  << "label " << label.text << " beside strip " << piece.strip_id
+                  << " lies on strip " << other.strip_id;
+          continue;
+        }
         for (int i = 0; i < 4; ++i)
           for (const Vec2& point : {box[i], Vec2(0.5 * (box[i] + box[(i + 1) % 4]))})
             EXPECT_TRUE(on_piece(point, piece))
@@ -558,6 +567,33 @@ TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
   EXPECT_TRUE(layout.pages.at(0).pieces.at(0).tabs.empty());
   ASSERT_EQ(layout.warnings.size(), 1u);
   EXPECT_NE(layout.warnings[0].find("no room"), std::string::npos);
+}
+
+// Strips too narrow for a seam label (1.5 mm at 2 mm text): the labels are printed beside
+// their pieces, on no piece and over no other text, and the nesting keeps other pieces off them.
+TEST(LayoutPages, LabelsWithoutRoomOnTheirPieceArePrintedBesideIt) {
+  std::vector<FlatStrip> strips;
+  for (int k = 0; k < 12; ++k) {
+    FlatStrip s = cell_strip(k, 12, 1, 5.0, 1.5);
+    std::string label = "N";
+    label += std::to_string(k / 2);
+    if (k % 2 == 0)
+      mark_seam(s, label, k + 1, [&](const Vec2& m) { return std::abs(m.y()) < 1e-9; });
+    else
+      mark_seam(s, label, k - 1, [&](const Vec2& m) { return std::abs(m.y() - 1.5) < 1e-9; });
+    strips.push_back(s);
+  }
+  LayoutOptions options;
+  options.scale = 1;
+  options.tab_width_mm = 0;  // no tab to carry the label either
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  int outside = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces)
+      for (const Label& label : piece.labels) outside += label.outside ? 1 : 0;
+  EXPECT_EQ(outside, 12);
+  EXPECT_EQ(layout.stats.overlapping_text, 0);
 }
 
 // Random rectangles seamed in pairs along their long sides, random scale: valid layouts.
