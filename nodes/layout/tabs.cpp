@@ -141,8 +141,8 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
     // Where the boundary turns right (into the tab's side) at an end of the flap, the flap
     // keeps to its half of the corner: the tab side of the corner is 180 degrees less the
     // turn, shared with the neighbouring flap or edge (a cone's apex leaves a narrow gap).
-    auto end_angle = [&](bool at_start) {
-      double angle = geometry.angle;
+    auto end_angle = [&](bool at_start, double base_angle) {
+      double angle = base_angle;
       const bool chain_end =
           at_start ? (r == 0 && !chain.closed) : (r == run_count - 1 && !chain.closed);
       double t = 0;
@@ -159,8 +159,6 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       if (t < 0) angle = std::min(angle, 0.5 * (std::numbers::pi + t) - 0.5 * kDegree);
       return angle;
     };
-    const double start_angle = end_angle(true), stop_angle = end_angle(false);
-    if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) continue;
     FlapPlan plan;
     plan.edges = run;
     plan.base.push_back(point(loop[run.front()].v0));
@@ -170,20 +168,28 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       length += direction(e).norm();
     }
     const double chord = (plan.base.back() - plan.base.front()).norm();
-    const double h0 =
-        std::min(geometry.width, 0.9 * std::min(length, chord) /
-                                     (1 / std::tan(start_angle) + 1 / std::tan(stop_angle)));
-    for (double factor : {1.0, 0.7, 0.5, 0.35}) {
-      const double h = h0 * factor;
-      if (h < geometry.min_height) break;
-      std::vector<Vec2> outer;
-      std::vector<int> slice_edges;
-      auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer, &slice_edges);
-      if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
-      plan.outer = std::move(outer);
-      plan.slices = std::move(slices);
-      plan.slice_edges = std::move(slice_edges);
-      break;
+    // The configured angle first; a seam too short for a flap of the smallest height at that
+    // angle gets steeper ends (a taller flap on the same base).
+    for (const double base_angle : {geometry.angle, 60 * kDegree, 75 * kDegree}) {
+      if (base_angle < geometry.angle || !plan.slices.empty()) continue;
+      const double start_angle = end_angle(true, base_angle);
+      const double stop_angle = end_angle(false, base_angle);
+      if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) break;
+      const double h0 =
+          std::min(geometry.width, 0.9 * std::min(length, chord) /
+                                       (1 / std::tan(start_angle) + 1 / std::tan(stop_angle)));
+      for (double factor : {1.0, 0.7, 0.5, 0.35}) {
+        const double h = h0 * factor;
+        if (h < geometry.min_height) break;
+        std::vector<Vec2> outer;
+        std::vector<int> slice_edges;
+        auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer, &slice_edges);
+        if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
+        plan.outer = std::move(outer);
+        plan.slices = std::move(slices);
+        plan.slice_edges = std::move(slice_edges);
+        break;
+      }
     }
     if (plan.slices.empty()) continue;
     for (const auto& slice : plan.slices) {

@@ -569,6 +569,21 @@ TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
   EXPECT_NE(layout.warnings[0].find("no room"), std::string::npos);
 }
 
+// A seam 1.5 mm long takes no flap of the smallest height (1 mm) at 45 degrees; steeper
+// ends give it one.
+TEST(LayoutPages, ShortSeamGetsASteeperTab) {
+  FlatStrip a = cell_strip(0, 1, 4, 1.5, 5.0), b = cell_strip(1, 1, 4, 1.5, 5.0);
+  mark_seam(a, "S", 1, [](const Vec2& m) { return std::abs(m.y()) < 1e-9; });
+  mark_seam(b, "S", 0, [](const Vec2& m) { return std::abs(m.y() - 20.0) < 1e-9; });
+  const std::vector<FlatStrip> strips{a, b};
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_EQ(layout.stats.seams, 1);
+  EXPECT_EQ(layout.stats.seams_without_tab, 0);
+}
+
 // Strips too narrow for a seam label (1.5 mm at 2 mm text): the labels are printed beside
 // their pieces, on no piece and over no other text, and the nesting keeps other pieces off them.
 TEST(LayoutPages, LabelsWithoutRoomOnTheirPieceArePrintedBesideIt) {
