@@ -20,10 +20,6 @@ std::string format_number(double value) {
   return stream.str();
 }
 
-[[noreturn]] void fail(const std::string& shape, const std::string& message) {
-  throw InvalidInputException(shape + ": " + message);
-}
-
 template <class Options>
 struct OptionField {
   const char* name;

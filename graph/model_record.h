@@ -57,6 +57,9 @@ struct ModelRecord {
   /// export: the print images baked from the input's textures or colours (report.json
   /// "texture"); 0 when nothing was baked.
   double bake_seconds = 0.0;
+  /// CPU seconds of the bake summed over the threads that did it (what one thread would take
+  /// on an idle machine; wall seconds also count waiting for a shared core).
+  double bake_cpu_seconds = 0.0;
   long baked_pixels = 0;
   int baked_images = 0;
 

@@ -7,7 +7,10 @@
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
 
+#include <time.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -28,6 +31,13 @@
 namespace papercraft {
 
 namespace {
+
+/// CPU time of the calling thread, in seconds.
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
 
 struct ExportOptions {
   std::vector<std::string> formats = {"pdf", "svg", "obj", "json", "ply"};
@@ -124,7 +134,8 @@ nlohmann::json model_report(const ModelRun& model) {
                       {"overlapping_text", record.overlapping_text}};
   report["texture"] = {{"baked_images", record.baked_images},
                        {"baked_pixels", record.baked_pixels},
-                       {"bake_seconds", record.bake_seconds}};
+                       {"bake_seconds", record.bake_seconds},
+                       {"bake_cpu_seconds", record.bake_cpu_seconds}};
   nlohmann::json nodes = nlohmann::json::object();
   for (std::size_t i = 0; i < model.node_labels.size(); ++i) {
     nodes[model.node_labels[i].first] = {
@@ -214,6 +225,7 @@ void register_export_files(Registry& registry) {
              if (strips.model && strips.model->appearance && !strips.model->appearance->empty() &&
                  (wants(formats, "pdf") || wants(formats, "svg"))) {
                const auto start = std::chrono::steady_clock::now();
+               const double sampler_cpu_start = thread_cpu_seconds();
                const SurfaceSampler sampler(
                    *strips.model->mesh, *strips.model->appearance,
                    material_images(model, *strips.model->appearance, max_texture_pixels));
@@ -221,8 +233,11 @@ void register_export_files(Registry& registry) {
                  std::map<int, const FlatStrip*> by_id;
                  for (const FlatStrip& strip : strips.flat) by_id[strip.id] = &strip;
                  images.resize(layout.pages.size());
+                 std::atomic<double> cpu{thread_cpu_seconds() - sampler_cpu_start};
                  tbb::parallel_for(std::size_t{0}, layout.pages.size(), [&](std::size_t page) {
+                   const double cpu_start = thread_cpu_seconds();
                    images[page] = bake_page(layout.pages[page], by_id, sampler, bake);
+                   cpu.fetch_add(thread_cpu_seconds() - cpu_start);
                  });
                  page_style.images = &images;
                  long pixels = 0;
@@ -235,8 +250,10 @@ void register_export_files(Registry& registry) {
                  const double seconds = std::chrono::duration<double>(
                                             std::chrono::steady_clock::now() - start)
                                             .count();
+                 const double cpu_seconds = cpu.load();
                  model.update([=](ModelRecord& record) {
                    record.bake_seconds = seconds;
+                   record.bake_cpu_seconds = cpu_seconds;
                    record.baked_pixels = pixels;
                    record.baked_images = count;
                  });

@@ -249,6 +249,12 @@ TEST(Texture, CubeOfSixUvIslandsPrintsEachFaceInItsColour) {
   obj.close();
   const auto out = run_file(dir / "cube.obj", "2%");
   ASSERT_TRUE(out.result.ok) << out.result.error;
+  // report.json says what was baked: one image per printed piece, and what it cost.
+  const auto& texture = out.report.at("texture");
+  EXPECT_GE(texture.at("baked_images").get<int>(), 1);
+  EXPECT_GT(texture.at("baked_pixels").get<long>(), 0);
+  EXPECT_GT(texture.at("bake_seconds").get<double>(), 0.0);
+  EXPECT_GT(texture.at("bake_cpu_seconds").get<double>(), 0.0);
   if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
   const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
     // The side the point lies on; undecided within 0.1 of an edge.
