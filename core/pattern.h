@@ -27,6 +27,9 @@ struct Label {
   double size_mm = 2.5;
   /// Printed beside its piece, on the paper around it (no room on the piece).
   bool outside = false;
+  /// For a label printed away from its seam: a thin line from the seam (first point, page
+  /// mm) to the text. Empty: none.
+  std::vector<Vec2> leader;
 };
 
 enum class FoldKind { Mountain, Valley };

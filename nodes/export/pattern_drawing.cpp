@@ -198,6 +198,12 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
       for (const auto& mark : piece.marks) marks.polylines.push_back({mark[0], mark[1]});
       labels.paths.push_back(std::move(marks));
     }
+    DrawPath leaders{{}, false, true, pens.print, ""};
+    leaders.pen.width_mm = std::min(leaders.pen.width_mm, 0.15);
+    for (const Label& label : piece.labels)
+      if (label.leader.size() >= 2 && (label.leader.back() - label.leader.front()).norm() > 1e-6)
+        leaders.polylines.push_back(label.leader);
+    if (!leaders.polylines.empty()) labels.paths.push_back(std::move(leaders));
     for (const Label& label : piece.labels) labels.texts.push_back({label, pens.text});
     labels.texts.push_back({piece.number, pens.text});
   }

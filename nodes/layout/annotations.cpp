@@ -97,7 +97,7 @@ PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& c
   else
     at = 0.5;
   const Vec2 d = length > 0 ? Vec2((b - a) / length) : Vec2::UnitX();
-  return {text, a + at * (b - a) + Vec2(-d.y(), d.x()) * (0.6 * size + 0.6), d, size};
+  return {text, a + at * (b - a) + Vec2(-d.y(), d.x()) * (0.6 * size + 0.6), d, size, -1, false, {}};
 }
 
 std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
@@ -175,7 +175,22 @@ bool point_in_polygon(const Vec2& p, const std::vector<Vec2>& polygon) {
   return inside;
 }
 
+// True when segments a-b and c-d cross at a point inside both (touching does not count).
+bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
+}
+
 }  // namespace
+
+std::array<Vec2, 4> leader_box(const std::vector<Vec2>& leader) {
+  const Vec2 d = leader.back() - leader.front();
+  const double length = d.norm();
+  const Vec2 n = length > 0 ? Vec2(Vec2(-d.y(), d.x()) * (kLeaderHalfWidth / length))
+                            : Vec2(kLeaderHalfWidth, 0.0);
+  return {leader.front() - n, leader.back() - n, leader.back() + n, leader.front() + n};
+}
 
 void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
                     const OrientedBox& box, const LayoutOptions& options,
@@ -397,6 +412,51 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         if (placed) break;
       }
       if (placed) break;
+    }
+    // Farther out, anywhere around a point of the seam (its middle first: a seam in a narrow
+    // slit is reached from the slit's mouth), with a leader line from the seam to the text:
+    // the line leaves the seam outwards and crosses no cut line, piece, tab or text.
+    for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9, 0.0, 1.0}) {
+      if (placed) break;
+      Vec2 along;
+      const Vec2 anchor = point_at(fraction * total, &along);
+      const Vec2 outward(along.y(), -along.x());
+      const double size = smallest;
+      for (double radius : {4.0, 6.0, 8.0, 11.0, 15.0, 20.0, 26.0}) {
+        for (int step = 0; step <= 34 && !placed; ++step) {
+          // 0, +10, -10, +20, -20, ... degrees from the outward normal, to +-170.
+          const double turn = (step % 2 == 1 ? 1 : -1) * ((step + 1) / 2) * 10.0 * kDegree;
+          const Vec2 ray = std::cos(turn) * outward + std::sin(turn) * along;
+          const Vec2 centre = anchor + radius * ray;
+          const auto candidate = text_box(centre, along, size, label.text.size());
+          if (!fits_outside(candidate)) continue;
+          // The line from the seam to where it meets the text box, stopping short of it.
+          const auto parts = segment_outside(anchor, centre, candidate);
+          if (parts.empty()) continue;
+          const Vec2 start = anchor + 0.2 * ray;
+          const Vec2 end = parts.front()[1] - 0.3 * ray;
+          if ((end - start).dot(ray) <= 0.1) continue;
+          const auto thin = leader_box({start, end});
+          bool free = true;
+          for (const auto& t : shapes.triangles)
+            free = free && !convex_overlap(thin.data(), 4, t.data(), 3, 0.01);
+          for (const auto& line : lines)
+            free = free && !segments_cross(start, end, line[0], line[1]);
+          for (const auto& other : taken) free = free && !segment_crosses(start, end, other);
+          for (const auto& flap : flaps)
+            free = free && !point_in_polygon(start, flap) && !point_in_polygon(end, flap);
+          if (!free) continue;
+          label.position = centre;
+          label.direction = along;
+          label.size = size;
+          label.outside = true;
+          label.leader = {anchor, end};
+          taken.push_back(candidate);
+          taken.push_back(leader_box(label.leader));
+          placed = true;
+        }
+        if (placed) break;
+      }
     }
     if (!placed) {
       label.size = std::max(label.size, smallest);

@@ -36,11 +36,19 @@ PieceLabel piece_number(const StripData& data, const Piece& piece, const Oriente
 /// Sets the piece number (shrunk, not below min_text_mm, until it lies clear) and moves each
 /// seam label along its chain (and shrinks it, down to min_text_mm) until its text box lies
 /// on the piece, crosses no cut line (of the piece or its tabs) and is clear of the number
-/// and the labels placed before it; else onto the seam's tab on this piece; a label that
-/// finds no such spot keeps its first one and is named in `warnings`.
+/// and the labels placed before it; else onto the seam's tab on this piece; else beside the
+/// seam off the piece; else farther around the seam's middle, joined to it by a leader line
+/// (PieceLabel::leader); a label that finds no such spot keeps its first one and is named in
+/// `warnings`.
 void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
                     const OrientedBox& box, const LayoutOptions& options,
                     std::vector<std::string>& warnings);
+
+/// Half the width of a label's leader line as the layout keeps it clear (mm).
+inline constexpr double kLeaderHalfWidth = 0.15;
+
+/// The thin box a leader line (two points) takes, for clearance checks and nesting.
+std::array<Vec2, 4> leader_box(const std::vector<Vec2>& leader);
 
 /// The boxes of the piece's number and seam labels (strip frame mm).
 std::vector<std::array<Vec2, 4>> text_boxes(const Piece& piece);

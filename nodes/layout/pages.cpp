@@ -35,6 +35,7 @@ using layout_internal::chain_label;
 using layout_internal::clear_of_text;
 using layout_internal::convex_hull;
 using layout_internal::convex_overlap;
+using layout_internal::leader_box;
 using layout_internal::cross;
 using layout_internal::Flap;
 using layout_internal::format_mm;
@@ -237,9 +238,11 @@ struct Orientation {
 // The boxes of the texts printed beside the piece (PieceLabel::outside).
 std::vector<std::array<Vec2, 4>> outside_text(const Piece& piece) {
   std::vector<std::array<Vec2, 4>> boxes;
-  for (const PieceLabel& label : piece.labels)
+  for (const PieceLabel& label : piece.labels) {
     if (label.outside)
       boxes.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
+    if (!label.leader.empty()) boxes.push_back(leader_box(label.leader));
+  }
   if (piece.number && piece.number->outside)
     boxes.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
                              piece.number->text.size()));
@@ -357,13 +360,16 @@ PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const Orie
   for (const auto& mark : piece.marks)
     for (const auto& part : clear_of_text({FoldLine{mark[0], mark[1]}}, boxes))
       placed.marks.push_back({to_page(part.a), to_page(part.b)});
-  for (const PieceLabel& label : piece.labels)
-    placed.labels.push_back(
-        {label.text, to_page(label.position), direction_degrees(label.direction), label.size,
-         label.outside});
+  for (const PieceLabel& label : piece.labels) {
+    std::vector<Vec2> leader;
+    for (const Vec2& p : label.leader) leader.push_back(to_page(p));
+    placed.labels.push_back({label.text, to_page(label.position),
+                             direction_degrees(label.direction), label.size, label.outside,
+                             std::move(leader)});
+  }
   const PieceLabel number = piece.number ? *piece.number : piece_number(data, piece, box, options);
   placed.number = {number.text, to_page(number.position), direction_degrees(number.direction),
-                   number.size, number.outside};
+                   number.size, number.outside, {}};
   return placed;
 }
 

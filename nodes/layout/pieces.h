@@ -59,6 +59,9 @@ struct PieceLabel {
   /// Printed beside the piece, on the paper around it, where the piece has no room for it
   /// (nesting keeps other pieces off it).
   bool outside = false;
+  /// For a label printed away from its seam: a thin line from the seam's middle (first
+  /// point) to the text box, so the reader knows which seam it names. Empty: none.
+  std::vector<Vec2> leader;
 };
 
 /// The triangles of a strip printed as one piece of paper (the whole strip or part of a split).

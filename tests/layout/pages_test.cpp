@@ -611,6 +611,65 @@ TEST(LayoutPages, LabelsWithoutRoomOnTheirPieceArePrintedBesideIt) {
   EXPECT_EQ(layout.stats.overlapping_text, 0);
 }
 
+// A seam at the bottom of a slot 1.5 mm wide and 19.5 mm deep, on a comb whose teeth are
+// 1.5 mm wide too: no room for its label on the piece, on a tab or beside the seam, so it is
+// printed beyond the slot with a leader line from the seam's middle that touches no piece and
+// no other text.
+TEST(LayoutPages, LabelInANarrowSlotGetsALeaderLine) {
+  FlatStrip comb = cell_strip(0, 3, 14, 1.5, 1.5, [](int i, int j) { return i != 1 || j == 0; });
+  mark_seam(comb, "S12", 1, [](const Vec2& m) {
+    return std::abs(m.y() - 1.5) < 1e-9 && std::abs(m.x() - 2.25) < 1e-9;
+  });
+  FlatStrip block = cell_strip(1, 4, 4, 5.0, 5.0);
+  mark_seam(block, "S12", 0, [](const Vec2& m) {
+    return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9;
+  });
+  // The block's seam edge must be as long as the comb's: 1.5 mm, from x = 1.75 to 3.25.
+  for (Vec2& v : block.vertices2d)
+    if (std::abs(v.y()) < 1e-9 && (std::abs(v.x() - 0.0) < 1e-9 || std::abs(v.x() - 5.0) < 1e-9))
+      v.x() = v.x() < 1 ? 1.75 : 3.25;
+  for (std::size_t i = 0; i < block.vertices2d.size(); ++i)
+    block.vertices3d[i] = Vec3(block.vertices2d[i].x(), block.vertices2d[i].y(), 0.0);
+  const std::vector<FlatStrip> strips{comb, block};
+  LayoutOptions options;
+  options.scale = 1;
+  options.tab_width_mm = 0;  // no tab to carry the label
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_EQ(layout.stats.overlapping_text, 0);
+  int leaders = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces) {
+      if (piece.strip_id != 0) continue;
+      ASSERT_EQ(piece.labels.size(), 1u);
+      const Label& label = piece.labels[0];
+      ASSERT_EQ(label.leader.size(), 2u) << "no leader line";
+      ++leaders;
+      EXPECT_TRUE(label.outside);
+      // It starts at the seam's middle: the comb's page vertex of (2.25, 1.5).
+      Vec2 seam_middle = Vec2::Zero();
+      for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
+        const Vec2 strip_point = comb.vertices2d[piece.strip_vertex[v]];
+        if ((strip_point - Vec2(1.5, 1.5)).norm() < 1e-9 ||
+            (strip_point - Vec2(3.0, 1.5)).norm() < 1e-9)
+          seam_middle += 0.5 * piece.vertices[v];
+      }
+      EXPECT_LT((label.leader.front() - seam_middle).norm(), 1e-6);
+      // It runs out of the slot on no piece, and ends at the text, clear of it.
+      for (int k = 1; k <= 20; ++k) {
+        const Vec2 point = label.leader.front() + (k / 20.0) * (label.leader.back() - label.leader.front());
+        for (const PlacedPiece& other : page.pieces)
+          EXPECT_FALSE(on_piece(point, other) && k > 1) << "leader crosses strip " << other.strip_id;
+      }
+      const auto box = label_box(label);
+      const double to_text = (label.leader.back() - label.position).norm();
+      EXPECT_LT(to_text, (box[2] - box[0]).norm()) << "leader ends far from its text";
+      EXPECT_GT((label.leader.back() - label.leader.front()).norm(), 18.0)
+          << "the slot is 19.5 mm deep";
+    }
+  EXPECT_EQ(leaders, 1);
+}
+
 // Random rectangles seamed in pairs along their long sides, random scale: valid layouts.
 TEST(LayoutPages, RandomStripsWithSeamsKeepEveryInvariant) {
   std::mt19937 random(12345);
