@@ -132,6 +132,10 @@ struct ScaleBar {
 
 struct Page {
   std::vector<PlacedPiece> pieces;
+  /// Joining strips: for a seam with room for a glue tab on neither side, a loose strip of
+  /// paper glued behind both sides of the seam. `name` is the seam's printed label, `marks`
+  /// hold its centre line (where the seam goes); no strip of the model (strip_id -1).
+  std::vector<PlacedPiece> joints;
   ScaleBar scale_bar;
   Label footer;  // "page 2 / 5"
 };
@@ -140,7 +144,8 @@ struct Page {
 struct LayoutStats {
   std::vector<double> page_fill;  // per page: pieces and tabs / printable area (0..1)
   int seams = 0;                  // printed seam labels (each counted once)
-  int seams_without_tab = 0;      // ... of which neither side carries a tab
+  int seams_without_tab = 0;      // ... of which neither side carries a tab nor has a joint
+  int joining_strips = 0;         // seams glued with a joining strip (Page::joints)
   double smallest_text_mm = 0.0;  // the smallest label or number
   int overlapping_text = 0;       // pairs of labels/numbers whose boxes intersect
 };

@@ -49,6 +49,7 @@ struct ModelRecord {
   std::vector<double> page_fill;  // per page: pieces and tabs over the printable area
   int seams = 0;
   int seams_without_tab = 0;
+  int joining_strips = 0;
   double smallest_text_mm = 0.0;
   int overlapping_text = 0;
 

@@ -121,6 +121,20 @@ std::string pieces_json(const PatternLayout& layout) {
            {"seams", std::move(seams)}});
     }
   }
+  nlohmann::json joints = nlohmann::json::array();
+  for (std::size_t page = 0; page < layout.pages.size(); ++page) {
+    for (const PlacedPiece& joint : layout.pages[page].joints) {
+      const auto& t = joint.transform;
+      joints.push_back(
+          {{"seam", joint.name},
+           {"page", page + 1},
+           {"transform",
+            {{"linear", {t.linear(0, 0), t.linear(0, 1), t.linear(1, 0), t.linear(1, 1)}},
+             {"translation", {t.translation.x(), t.translation.y()}},
+             {"rotation_degrees", t.rotation_degrees}}},
+           {"outline", joint.vertices}});
+    }
+  }
   // In number order (1, 2, ..., 12a, 12b, ...), whatever page each lies on.
   auto key = [](const nlohmann::json& piece) {
     const std::string name = piece.at("name").get<std::string>();
@@ -134,7 +148,8 @@ std::string pieces_json(const PatternLayout& layout) {
       {"mm_per_unit", layout.mm_per_unit},
       {"page", {{"width_mm", layout.page.width_mm}, {"height_mm", layout.page.height_mm}}},
       {"pages", layout.pages.size()},
-      {"pieces", std::move(pieces)}};
+      {"pieces", std::move(pieces)},
+      {"joints", std::move(joints)}};
   return root.dump(1) + "\n";
 }
 

@@ -130,6 +130,7 @@ nlohmann::json model_report(const ModelRun& model) {
                       {"mean_fill_but_last", fill_but_last},
                       {"seams", record.seams},
                       {"seams_without_tab", record.seams_without_tab},
+                      {"joining_strips", record.joining_strips},
                       {"smallest_text_mm", record.smallest_text_mm},
                       {"overlapping_text", record.overlapping_text}};
   report["texture"] = {{"baked_images", record.baked_images},

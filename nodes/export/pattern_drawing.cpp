@@ -168,7 +168,11 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
     print.texts.push_back({footer, pens.text});
   }
 
-  for (const PlacedPiece& piece : page.pieces) {
+  std::vector<const PlacedPiece*> placed;
+  for (const PlacedPiece& piece : page.pieces) placed.push_back(&piece);
+  for (const PlacedPiece& joint : page.joints) placed.push_back(&joint);
+  for (const PlacedPiece* each : placed) {
+    const PlacedPiece& piece = *each;
     DrawPath outline{piece.cut_outline, true, true, pens.cut, ""};
     cut.paths.push_back(std::move(outline));
     DrawPath hills{{}, false, true, pens.mountain, ""}, dales{{}, false, true, pens.valley, ""};

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -32,6 +33,7 @@ using layout_internal::add_tabs;
 using layout_internal::arrange_labels;
 using layout_internal::Chain;
 using layout_internal::chain_label;
+using layout_internal::chain_length;
 using layout_internal::clear_of_text;
 using layout_internal::convex_hull;
 using layout_internal::convex_overlap;
@@ -406,41 +408,58 @@ void add_page_furniture(Page& page, int index, int count, const LayoutOptions& o
 LayoutStats layout_stats(const PatternLayout& layout, const Vec2& area) {
   LayoutStats stats;
   std::map<std::string, bool> tabbed;
-  std::vector<Label> texts;
+  stats.smallest_text_mm = std::numeric_limits<double>::infinity();
+  bool any_text = false;
   for (const Page& page : layout.pages) {
     double covered = 0;
-    for (const PlacedPiece& piece : page.pieces) {
-      for (const Triangle& t : piece.triangles)
-        covered += 0.5 * std::abs(cross(piece.vertices[t[1]] - piece.vertices[t[0]],
-                                        piece.vertices[t[2]] - piece.vertices[t[0]]));
-      for (const Tab& tab : piece.tabs)
-        for (const auto& flap : tab.flaps) covered += std::abs(signed_area(flap));
-      for (const PieceSeam& seam : piece.seams) tabbed[seam.label] = tabbed[seam.label] || seam.tab;
-      texts.push_back(piece.number);
-      texts.insert(texts.end(), piece.labels.begin(), piece.labels.end());
+    std::vector<std::array<Vec2, 4>> boxes;  // texts of one page only can overlap
+    for (const auto* pieces : {&page.pieces, &page.joints}) {
+      for (const PlacedPiece& piece : *pieces) {
+        for (const Triangle& t : piece.triangles)
+          covered += 0.5 * std::abs(cross(piece.vertices[t[1]] - piece.vertices[t[0]],
+                                          piece.vertices[t[2]] - piece.vertices[t[0]]));
+        for (const Tab& tab : piece.tabs)
+          for (const auto& flap : tab.flaps) covered += std::abs(signed_area(flap));
+        for (const PieceSeam& seam : piece.seams)
+          tabbed[seam.label] = tabbed[seam.label] || seam.tab;
+        if (pieces == &page.joints) {
+          tabbed[piece.name] = true;
+          ++stats.joining_strips;
+        }
+        std::vector<const Label*> texts{&piece.number};
+        for (const Label& label : piece.labels) texts.push_back(&label);
+        for (const Label* text : texts) {
+          stats.smallest_text_mm = std::min(stats.smallest_text_mm, text->size_mm);
+          any_text = true;
+          boxes.push_back(label_box(*text));
+        }
+      }
     }
     stats.page_fill.push_back(area.prod() > 0 ? covered / area.prod() : 0.0);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+      for (std::size_t j = i + 1; j < boxes.size(); ++j)
+        if (convex_overlap(boxes[i].data(), 4, boxes[j].data(), 4, 0.0)) ++stats.overlapping_text;
   }
+  if (!any_text) stats.smallest_text_mm = 0.0;
   stats.seams = static_cast<int>(tabbed.size());
   for (const auto& [label, tab] : tabbed) stats.seams_without_tab += tab ? 0 : 1;
-  stats.smallest_text_mm = texts.empty() ? 0.0 : std::numeric_limits<double>::infinity();
-  std::vector<std::array<Vec2, 4>> boxes;
-  for (const Label& text : texts) {
-    stats.smallest_text_mm = std::min(stats.smallest_text_mm, text.size_mm);
-    boxes.push_back(label_box(text));
-  }
-  // Texts of one page only can overlap; texts of different pages have far-apart boxes too
-  // rarely to matter, so pairs are judged page by page.
-  std::size_t first = 0;
-  for (const Page& page : layout.pages) {
-    std::size_t count = 0;
-    for (const PlacedPiece& piece : page.pieces) count += 1 + piece.labels.size();
-    for (std::size_t i = first; i < first + count; ++i)
-      for (std::size_t j = i + 1; j < first + count; ++j)
-        if (convex_overlap(boxes[i].data(), 4, boxes[j].data(), 4, 0.0)) ++stats.overlapping_text;
-    first += count;
-  }
   return stats;
+}
+
+// A joining strip for a seam `length` mm long: a rectangle (length + 2 mm, at least 8 mm) by
+// 2 x tab_width_mm, flat, cut all round (model units at mm_per_unit); its centre line is where
+// the seam goes.
+FlatStrip joining_strip(int id, double length, const LayoutOptions& options, double mm_per_unit) {
+  const double l = std::max(length + 2.0, 8.0) / mm_per_unit;
+  const double w = 2.0 * options.tab_width_mm / mm_per_unit;
+  FlatStrip strip;
+  strip.id = id;
+  strip.source_strip = -1;
+  strip.vertices2d = {Vec2(0, 0), Vec2(l, 0), Vec2(l, w), Vec2(0, w)};
+  for (const Vec2& v : strip.vertices2d) strip.vertices3d.emplace_back(v.x(), v.y(), 0.0);
+  strip.triangles = {{0, 1, 2}, {0, 2, 3}};
+  for (int i = 0; i < 4; ++i) strip.boundary.push_back({i, (i + 1) % 4, EdgeKind::Cut, -1, "", -1});
+  return strip;
 }
 
 }  // namespace
@@ -533,6 +552,40 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     pieces[a].seams.push_back({pair.printed, b >= 0 ? pieces[b].name : "", has_tab(a)});
     if (b >= 0) pieces[b].seams.push_back({pair.printed, pieces[a].name, has_tab(b)});
   }
+  // Seams with room for a tab on neither side are glued with a joining strip behind them.
+  std::deque<FlatStrip> joint_strips;  // the strips' storage (StripData points into it)
+  if (options.joining_strips && options.tab_width_mm > 0) {
+    int next_id = 0;
+    for (const FlatStrip& strip : strips) next_id = std::max(next_id, strip.id + 1);
+    const std::size_t model_pieces = pieces.size();
+    for (const SeamPair& pair : pairs) {
+      if (pair.second < 0) continue;
+      const Chain& chain = chains[pair.first];
+      bool tabbed = false;
+      for (int side : {pair.first, pair.second})
+        for (const PieceTab& tab : pieces[chains[side].piece].tabs)
+          tabbed = tabbed || (tab.label == pair.printed && !tab.flaps.empty());
+      if (tabbed) continue;
+      const Piece& owner = pieces[chain.piece];
+      const double length = chain_length(p.strips[owner.strip], owner, chain);
+      joint_strips.push_back(joining_strip(next_id++, length, options, p.mm_per_unit));
+      p.strips.push_back(prepare_strip(joint_strips.back(), p.mm_per_unit));
+      StripData& data = p.strips.back();
+      Piece joint;
+      joint.strip = static_cast<int>(p.strips.size()) - 1;
+      joint.name = pair.printed;
+      joint.joint = true;
+      joint.triangles = data.triangles;
+      joint.loops = piece_loops(data, joint.triangles, warnings);
+      const Vec2 a = 0.5 * (data.points[0] + data.points[3]);
+      const Vec2 b = 0.5 * (data.points[1] + data.points[2]);
+      joint.marks.push_back({a + Vec2(0.5, 0), b - Vec2(0.5, 0)});
+      pieces.push_back(std::move(joint));
+    }
+    if (pieces.size() > model_pieces)
+      warnings.push_back(std::to_string(pieces.size() - model_pieces) +
+                         " seams with no room for a tab get a joining strip glued behind them");
+  }
 
   std::vector<Orientation> orientations;
   std::vector<int> packed, oversized;
@@ -541,6 +594,16 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     orientations.push_back(orient_piece(p.strips[pieces[i].strip], pieces[i], p.area));
     arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, orientations.back().box, options,
                    warnings);
+    if (pieces[i].joint && pieces[i].number) {
+      // The seam's label at the middle of its joining strip, on the centre line.
+      const auto& points = p.strips[pieces[i].strip].points;
+      PieceLabel& name = *pieces[i].number;
+      name.position = 0.25 * (points[0] + points[1] + points[2] + points[3]);
+      name.direction = Vec2::UnitX();
+      name.size = std::max(options.min_text_mm,
+                           std::min(options.number_size_mm, 0.6 * (points[2] - points[1]).norm()));
+      name.outside = false;
+    }
     // Text printed beside the piece takes paper too.
     if (!outside_text(pieces[i]).empty())
       orientations.back() = orient_piece(p.strips[pieces[i].strip], pieces[i], p.area);
@@ -602,23 +665,31 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   }
   const int packed_pages = nested.empty() ? result.pages : nested_pages;
   layout.pages.resize(packed_pages + oversized.size());
+  // A placed piece onto its page; a joining strip among the page's joints, of no model strip.
+  auto put = [&](int page, int i, PlacedPiece placed) {
+    if (!pieces[i].joint) {
+      layout.pages[page].pieces.push_back(std::move(placed));
+      return;
+    }
+    placed.strip_id = -1;
+    layout.pages[page].joints.push_back(std::move(placed));
+  };
   for (std::size_t k = 0; k < packed.size(); ++k) {
     const int i = packed[k];
     if (!nested.empty()) {
       const NestPlacement& at = nested[k];
-      layout.pages[at.page].pieces.push_back(place_piece_at(
+      put(at.page, i, place_piece_at(
           p.strips[pieces[i].strip], pieces[i], orientations[i].box, at.angle,
           at.offset + Vec2(options.margin_mm, options.margin_mm), options, p.mm_per_unit));
       continue;
     }
     const PackedRectangle& at = result.placements[k];
-    layout.pages[at.page].pieces.push_back(place_piece(
+    put(at.page, i, place_piece(
         p.strips[pieces[i].strip], pieces[i], orientations[i].box, at, options, p.mm_per_unit));
   }
   for (std::size_t k = 0; k < oversized.size(); ++k) {
     const int i = oversized[k];
-    layout.pages[packed_pages + k].pieces.push_back(
-        place_piece(p.strips[pieces[i].strip], pieces[i], orientations[i].box, {0, 0, 0, false},
+    put(packed_pages + static_cast<int>(k), i, place_piece(p.strips[pieces[i].strip], pieces[i], orientations[i].box, {0, 0, 0, false},
                     options, p.mm_per_unit));
   }
   for (int i = 0; i < static_cast<int>(layout.pages.size()); ++i)

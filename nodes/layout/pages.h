@@ -63,6 +63,10 @@ struct LayoutOptions {
   double scale = 0.0;
   double tab_width_mm = 5.0;        // 0: no tabs
   double tab_angle_degrees = 45.0;  // angle between a tab's ends and its seam edge
+  /// A seam with room for a tab on neither side (a narrow slit, a tiny seam in a notch) gets
+  /// a joining strip instead: a loose strip 2 x tab_width_mm wide, named by the seam's label,
+  /// glued behind both sides (Page::joints).
+  bool joining_strips = true;
   double fold_angle_degrees = 0.5;  // bend angle above which an inner edge is a fold line
   /// Bend angle from which a fold line is a real crease (drawn in full mountain/valley
   /// style); folds between fold_angle_degrees and this are gentle bends.

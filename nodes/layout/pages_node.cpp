@@ -41,6 +41,10 @@ ParamTable<O> layout_table(bool nesting) {
               "tab_width_mm", [](O & o) -> auto& { return o.tab_width_mm; },
               "glue tab width (0: no tabs)", at_least(0))
           .add(
+              "joining_strips", [](O & o) -> auto& { return o.joining_strips; },
+              "a seam with room for a tab on neither side gets a loose strip glued behind both "
+              "sides")
+          .add(
               "label_size_mm", [](O & o) -> auto& { return o.label_size_mm; },
               "seam label text height", greater_than(0))
           .add(
@@ -113,6 +117,7 @@ NodeSpec layout_spec(std::string name, std::string summary, const ParamTable<O>&
                 record.page_fill = layout->stats.page_fill;
                 record.seams = layout->stats.seams;
                 record.seams_without_tab = layout->stats.seams_without_tab;
+                record.joining_strips = layout->stats.joining_strips;
                 record.smallest_text_mm = layout->stats.smallest_text_mm;
                 record.overlapping_text = layout->stats.overlapping_text;
               });

@@ -70,6 +70,7 @@ struct Piece {
   int index = 0;
   int count = 1;
   std::string name;  // as printed: "12", or "12a", "12b" for the pieces of a split strip
+  bool joint = false;  // a joining strip (name: the seam's label), placed in Page::joints
   std::vector<int> triangles;
   std::vector<std::vector<PieceEdge>> loops;
   std::vector<Flap> flaps;

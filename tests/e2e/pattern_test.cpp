@@ -108,6 +108,15 @@ TEST(Pattern, PawnAndFigureEightPatternsAreIsometricAndSeamed) {
     ASSERT_FALSE(numbers.empty());
     EXPECT_EQ(*numbers.begin(), 1);
     EXPECT_EQ(*numbers.rbegin(), static_cast<int>(numbers.size())) << "numbers with gaps";
+    // Every seam has a tab or a joining strip; a joining strip names a seam of the pieces.
+    const auto& layout = out.report.at("layout");
+    EXPECT_EQ(layout.at("seams_without_tab").get<int>(), 0);
+    EXPECT_EQ(pieces.at("joints").size(), layout.at("joining_strips").get<std::size_t>());
+    std::set<std::string> seam_labels;
+    for (const auto& piece : pieces.at("pieces"))
+      for (const auto& seam : piece.at("seams")) seam_labels.insert(seam.at("label"));
+    for (const auto& joint : pieces.at("joints"))
+      EXPECT_EQ(seam_labels.count(joint.at("seam").get<std::string>()), 1u);
   }
 }
 

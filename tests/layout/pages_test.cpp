@@ -146,7 +146,7 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
   };
   std::map<int, const FlatStrip*> by_id;
   for (const FlatStrip& s : strips) by_id[s.id] = &s;
-  std::map<std::string, int> label_count, tab_count;
+  std::map<std::string, int> label_count, tab_count, joint_count;
   std::map<int, std::size_t> triangles_per_strip;
 
   for (std::size_t p = 0; p < layout.pages.size(); ++p) {
@@ -226,10 +226,23 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
         }
       shapes.push_back(std::move(mine));
     }
-    // No two label boxes (seam labels and piece numbers) overlap, and every seam label lies
-    // on its piece.
+    // Joining strips: flat rectangles inside the margins, named by their seam.
+    for (const PlacedPiece& joint : page.joints) {
+      EXPECT_EQ(joint.strip_id, -1);
+      EXPECT_EQ(joint.vertices.size(), 4u);
+      EXPECT_TRUE(joint.tabs.empty());
+      for (const Vec2& v : joint.vertices) EXPECT_TRUE(inside(v)) << v.transpose();
+      ++joint_count[joint.name];
+      shapes.push_back(shapes_of(joint));
+    }
+    // No two label boxes (seam labels, piece numbers, joint names) overlap, and every seam
+    // label lies on its piece.
     std::vector<std::array<Vec2, 4>> boxes;
     std::vector<std::string> names;
+    for (const PlacedPiece& joint : page.joints) {
+      boxes.push_back(label_box(joint.number));
+      names.push_back(joint.number.text);
+    }
     for (const PlacedPiece& piece : page.pieces) {
       for (const Label& label : piece.labels) {
         boxes.push_back(label_box(label));
@@ -288,11 +301,14 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
   }
   for (const auto& [label, count] : label_count) {
     EXPECT_EQ(count, 2) << "seam label " << label;
-    if (options.tab_width_mm > 0) {
-      EXPECT_EQ(tab_count[label], 1) << "tabs of seam " << label;
+    if (options.tab_width_mm > 0 && options.joining_strips) {
+      EXPECT_EQ(tab_count[label] + joint_count[label], 1) << "tabs and joints of seam " << label;
+    } else if (options.tab_width_mm > 0) {
+      EXPECT_LE(tab_count[label], 1) << "tabs of seam " << label;
     }
   }
   for (const auto& [label, count] : tab_count) EXPECT_EQ(label_count.count(label), 1u) << label;
+  for (const auto& [label, count] : joint_count) EXPECT_EQ(label_count.count(label), 1u) << label;
 }
 
 std::vector<const PlacedPiece*> pieces_of(const PatternLayout& layout, int strip_id) {
@@ -562,9 +578,38 @@ TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
   ASSERT_EQ(piece.tabs.size(), 1u);
   EXPECT_TRUE(layout.warnings.empty()) << (layout.warnings.empty() ? "" : layout.warnings[0]);
 
+  // In the 0.8 mm slot no tab fits: the seam (16 mm long) gets a joining strip instead, a
+  // loose 18 x 10 mm strip named S to glue behind both walls.
   const auto narrow = slotted(1);
   layout = layout_pages(narrow, options);
+  expect_valid_layout(layout, narrow, options);
   EXPECT_TRUE(layout.pages.at(0).pieces.at(0).tabs.empty());
+  ASSERT_EQ(layout.warnings.size(), 2u);
+  EXPECT_NE(layout.warnings[0].find("no room"), std::string::npos);
+  EXPECT_NE(layout.warnings[1].find("joining strip"), std::string::npos);
+  EXPECT_EQ(layout.stats.seams, 1);
+  EXPECT_EQ(layout.stats.seams_without_tab, 0);
+  EXPECT_EQ(layout.stats.joining_strips, 1);
+  int joints = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& joint : page.joints) {
+      ++joints;
+      EXPECT_EQ(joint.name, "S");
+      EXPECT_EQ(joint.number.text, "S");
+      const double a = (joint.vertices[1] - joint.vertices[0]).norm();
+      const double b = (joint.vertices[2] - joint.vertices[1]).norm();
+      EXPECT_NEAR(std::max(a, b), 18.0, 1e-9);
+      EXPECT_NEAR(std::min(a, b), 2 * options.tab_width_mm, 1e-9);
+      ASSERT_EQ(joint.marks.size(), 2u);  // the centre line, cut around the name
+    }
+  EXPECT_EQ(joints, 1);
+
+  // Without joining strips the seam is named as having none.
+  options.joining_strips = false;
+  layout = layout_pages(narrow, options);
+  expect_valid_layout(layout, narrow, options);
+  EXPECT_EQ(layout.stats.seams_without_tab, 1);
+  EXPECT_EQ(layout.stats.joining_strips, 0);
   ASSERT_EQ(layout.warnings.size(), 1u);
   EXPECT_NE(layout.warnings[0].find("no room"), std::string::npos);
 }
