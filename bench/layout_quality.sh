@@ -2,9 +2,10 @@
 # The pages a maker prints, over every libcgal-demo mesh (or the given meshes) at one tolerance
 # and height: each mesh is laid out twice, with layout.pages (nesting by outlines) and with
 # layout.rectangles (MaxRects, the packer before), everything else the same. Prints per mesh
-# the pages of each, the mean fill of every page but the last, seams without a tab, the
-# smallest text and the overlapping texts (report.json "layout"), the layout node's seconds;
-# then the totals and the five meshes whose page count fell the most.
+# the pages of each, the mean fill of every page but the last, seams without a tab (nor a
+# joining strip), the smallest text, the overlapping texts and the joining strips (report.json
+# "layout"), the layout node's seconds; then the totals and the five meshes whose page count
+# fell the most.
 #
 #   bench/layout_quality.sh                               # all meshes, 2%, 200 mm
 #   bench/layout_quality.sh --tolerance 5% a.off b.off
@@ -77,14 +78,15 @@ def fill(l):
     return sum(f[:-1]) / (len(f) - 1) if len(f) > 1 else float("nan")
 print("\t".join(str(x) for x in [sys.argv[3], ln["pages"], lr["pages"], f"{fill(ln):.3f}", f"{fill(lr):.3f}",
       ln["seams"], ln["seams_without_tab"], ln["smallest_text_mm"], ln["overlapping_text"],
+      ln.get("joining_strips", 0),
       f'{n["timing"]["nodes"]["layout"]["seconds"]:.3f}', f'{r["timing"]["nodes"]["layout"]["seconds"]:.3f}']))
 PY
 done
 python3 - "$rows" <<'PY'
 import sys, math
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
-print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | layout s nest | layout s rect |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | joining strips | layout s nest | layout s rect |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 for r in rows: print("| " + " | ".join(r) + " |")
 pn = sum(int(r[1]) for r in rows); pr = sum(int(r[2]) for r in rows)
 def mean(i):
@@ -95,7 +97,8 @@ print(f"{len(rows)} meshes: pages {pn} nested vs {pr} rectangles ({pn / max(pr, 
       f"mean fill but last page {mean(3):.3f} vs {mean(4):.3f}; seams without a tab "
       f"{sum(int(r[6]) for r in rows)} of {sum(int(r[5]) for r in rows)}; smallest text "
       f"{min(float(r[7]) for r in rows):.2f} mm; overlapping texts {sum(int(r[8]) for r in rows)}; "
-      f"layout seconds {sum(float(r[9]) for r in rows):.1f} vs {sum(float(r[10]) for r in rows):.1f}")
+      f"joining strips {sum(int(r[9]) for r in rows)}; "
+      f"layout seconds {sum(float(r[10]) for r in rows):.1f} vs {sum(float(r[11]) for r in rows):.1f}")
 drop = sorted(rows, key=lambda r: int(r[1]) - int(r[2]))[:5]
 print("largest page drops: " + ", ".join(f"{r[0]} {r[2]} -> {r[1]}" for r in drop))
 PY
