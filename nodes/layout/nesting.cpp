@@ -1,6 +1,8 @@
 // Raster bottom-left fill of pieces by their outlines (see nesting.h).
 #include "nodes/layout/nesting.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -166,32 +168,16 @@ class Sheet {
 
 }  // namespace
 
-std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, const Vec2& area,
-                                       const NestOptions& options, int* pages) {
-  // A raster of at most ~1.5 million cells per page.
-  double cell = options.cell_mm;
-  if (area.prod() / (cell * cell) > 1.5e6) cell = std::sqrt(area.prod() / 1.5e6);
-  const int width = static_cast<int>(std::floor(area.x() / cell));
-  const int height = static_cast<int>(std::floor(area.y() / cell));
-  const int grow = static_cast<int>(std::ceil(options.spacing_mm / cell - 1e-9));
-  const int rotations = std::max(1, options.rotations);
+namespace {
 
-  std::vector<std::vector<Mask>> masks(shapes.size());
-  std::vector<int> order(shapes.size());
-  for (std::size_t i = 0; i < shapes.size(); ++i) {
-    order[i] = static_cast<int>(i);
-    for (int k = 0; k < rotations; ++k)
-      masks[i].push_back(rasterise(shapes[i], 2 * std::numbers::pi * k / rotations, cell));
-  }
-  // Largest first; ties in input order.
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    const long ca = masks[a].empty() ? 0 : masks[a][0].cells;
-    const long cb = masks[b].empty() ? 0 : masks[b][0].cells;
-    return ca > cb;
-  });
-
-  std::vector<NestPlacement> placements(shapes.size());
+// One bottom-left fill of the shapes in `order`; sets *pages and *last_cells (the cells the
+// last page's pieces cover).
+std::vector<NestPlacement> fill_in_order(const std::vector<std::vector<Mask>>& masks,
+                                         const std::vector<int>& order, int width, int height,
+                                         int grow, double cell, int* pages, long* last_cells) {
+  std::vector<NestPlacement> placements(masks.size());
   std::vector<Sheet> sheets;
+  std::vector<long> cells;
   const Sheet empty(std::max(width, 1), std::max(height, 1));
   for (int i : order) {
     if (masks[i].empty() || masks[i][0].cells == 0) continue;
@@ -205,7 +191,10 @@ std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, con
     }
     if (!fits_somewhere) continue;
     for (std::size_t page = 0;; ++page) {
-      if (page == sheets.size()) sheets.emplace_back(width, height);
+      if (page == sheets.size()) {
+        sheets.emplace_back(width, height);
+        cells.push_back(0);
+      }
       int best = -1, best_x = 0, best_y = 0, bound = std::numeric_limits<int>::max();
       for (int k = 0; k < static_cast<int>(masks[i].size()); ++k) {
         const Mask& mask = masks[i][k];
@@ -219,6 +208,7 @@ std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, con
       if (best < 0) continue;
       const Mask& mask = masks[i][best];
       sheets[page].place(mask, best_x, best_y, grow);
+      cells[page] += mask.cells;
       placements[i].page = static_cast<int>(page);
       placements[i].angle = mask.angle;
       placements[i].offset = Vec2(best_x * cell, best_y * cell) - mask.min;
@@ -226,7 +216,68 @@ std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, con
     }
   }
   *pages = static_cast<int>(sheets.size());
+  *last_cells = cells.empty() ? 0 : cells.back();
   return placements;
+}
+
+}  // namespace
+
+std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, const Vec2& area,
+                                       const NestOptions& options, int* pages) {
+  // A raster of at most ~1.5 million cells per page.
+  double cell = options.cell_mm;
+  if (area.prod() / (cell * cell) > 1.5e6) cell = std::sqrt(area.prod() / 1.5e6);
+  const int width = static_cast<int>(std::floor(area.x() / cell));
+  const int height = static_cast<int>(std::floor(area.y() / cell));
+  const int grow = static_cast<int>(std::ceil(options.spacing_mm / cell - 1e-9));
+  const int rotations = std::max(1, options.rotations);
+
+  std::vector<std::vector<Mask>> masks(shapes.size());
+  tbb::parallel_for(std::size_t{0}, shapes.size(), [&](std::size_t i) {
+    for (int k = 0; k < rotations; ++k)
+      masks[i].push_back(rasterise(shapes[i], 2 * std::numbers::pi * k / rotations, cell));
+  });
+  // Orders to fill in, each largest first by a different measure (ties in input order): the
+  // area covered, the longest side, the area of the bounding rectangle. The fill that needs
+  // the fewest pages, then leaves the least on its last page (fuller pages before it), wins.
+  auto measure = [&](int by, int i) -> double {
+    if (masks[i].empty()) return 0.0;
+    const Mask& m = masks[i][0];
+    if (by == 0) return static_cast<double>(m.cells);
+    if (by == 1) {
+      double longest = 0;
+      for (const Mask& r : masks[i]) longest = std::max(longest, double(std::max(r.width, r.height)));
+      return longest;
+    }
+    double tightest = std::numeric_limits<double>::infinity();
+    for (const Mask& r : masks[i]) tightest = std::min(tightest, double(r.width) * r.height);
+    return tightest;
+  };
+  const int orders = std::clamp(options.orders, 1, 3);
+  struct Fill {
+    std::vector<NestPlacement> placements;
+    int pages = 0;
+    long last = 0;
+  };
+  std::vector<Fill> fills(orders);
+  tbb::parallel_for(0, orders, [&](int by) {
+    std::vector<int> order(shapes.size());
+    std::vector<double> key(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      order[i] = static_cast<int>(i);
+      key[i] = measure(by, static_cast<int>(i));
+    }
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] > key[b]; });
+    Fill& fill = fills[by];
+    fill.placements = fill_in_order(masks, order, width, height, grow, cell, &fill.pages, &fill.last);
+  });
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < fills.size(); ++k)
+    if (fills[k].pages < fills[best].pages ||
+        (fills[k].pages == fills[best].pages && fills[k].last < fills[best].last))
+      best = k;
+  *pages = fills[best].pages;
+  return std::move(fills[best].placements);
 }
 
 }  // namespace papercraft::layout_internal

@@ -3,7 +3,9 @@
 // and tab slices) is rasterised conservatively at several rotations, and placed, largest
 // first, on the first page and at the rotation where it lies highest (then leftmost) without
 // coming nearer than the spacing to any piece already there; so pieces go into the
-// concavities of others, which packing by bounding rectangles leaves empty.
+// concavities of others, which packing by bounding rectangles leaves empty. "Largest" is
+// tried three ways (area, longest side, bounding rectangle; side by side on the threads
+// there are) and the fill with the fewest pages and the emptiest last page is kept.
 
 #include <array>
 #include <vector>
@@ -22,6 +24,9 @@ struct NestOptions {
   double cell_mm = 0.5;     // raster cell; coarsened for pages too large for it
   int rotations = 24;       // every 360 / rotations degrees; never mirrored
   double spacing_mm = 2.0;  // at least this much paper between two pieces
+  /// Fills tried, largest first by area, by longest side, by bounding rectangle (1..3); the
+  /// one needing the fewest pages, then leaving the least on the last page, is kept.
+  int orders = 3;
 };
 
 /// Where a piece goes: page, and the map from its frame to the printable area (mm, origin at
