@@ -187,6 +187,10 @@ std::vector<GuidePiece> guide_pieces(const PatternLayout& layout,
       pieces.push_back(std::move(piece));
     }
   }
+  // Joining strips are listed in the table with their page (no 3D: not drawn in the views).
+  for (std::size_t page = 0; page < layout.pages.size(); ++page)
+    for (const PlacedPiece& joint : layout.pages[page].joints)
+      pieces.push_back({"joint " + joint.name, static_cast<int>(page) + 1, {}});
   return pieces;
 }
 

@@ -23,7 +23,8 @@ struct GuidePiece {
 };
 
 /// The pieces of `layout` in 3D, from the flat strips they were cut from (strip ids match
-/// PlacedPiece::strip_id; a piece's triangles are its strip's, through strip_vertex).
+/// PlacedPiece::strip_id; a piece's triangles are its strip's, through strip_vertex); then
+/// the joining strips, named "joint <seam>", without triangles.
 std::vector<GuidePiece> guide_pieces(const PatternLayout& layout,
                                      const std::vector<FlatStrip>& strips);
 
