@@ -11,7 +11,10 @@
 #   bench/layout_quality.sh --tolerance 5% a.off b.off
 #
 # Options: --tolerance T (2%), --height MM (200), --threads N (2), --max-faces N (30000),
-#          --timeout S (300), --work DIR (build/layout-quality), --bin PATH
+#          --timeout S (300), --work DIR (build/layout-quality), --bin PATH,
+#          --nest-only (one run per mesh: the rectangle pages from report.json's
+#          rectangle_pages, the same pieces packed by MaxRects in that run; no rectangle fill
+#          or seconds, printed as nan)
 # Exit status 0 (findings are data); 2 for a bad command line.
 set -euo pipefail
 
@@ -24,6 +27,7 @@ timeout_s=300
 work=$root/build/layout-quality
 bin=$root/build/runner/papercraft
 declare -a meshes=()
+declare -a variants=(nest rect)
 
 usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 while [[ $# -gt 0 ]]; do
@@ -35,6 +39,7 @@ while [[ $# -gt 0 ]]; do
     --timeout) timeout_s=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
     --bin) bin=$2; shift 2 ;;
+    --nest-only) variants=(nest); shift ;;
     -h|--help) usage ;;
     -*) echo "layout_quality.sh: unknown option $1" >&2; usage ;;
     *) meshes+=("$1"); shift ;;
@@ -61,7 +66,7 @@ for mesh in "${meshes[@]}"; do
   if [[ $max_faces -gt 0 && $mesh == *.off && $(faces_of "$mesh") -gt $max_faces ]]; then continue; fi
   name=$(basename "${mesh%.*}")
   ok=1
-  for variant in nest rect; do
+  for variant in "${variants[@]}"; do
     args=()
     [[ $variant == rect ]] && args=(-c "$work/rectangles.yaml")
     if ! timeout "$timeout_s" "$work/papercraft" run "$mesh" --tolerance "$tolerance" \
@@ -69,9 +74,14 @@ for mesh in "${meshes[@]}"; do
         >/dev/null 2>&1; then ok=0; fi
   done
   [[ $ok -eq 1 ]] || continue
-  python3 - "$work/nest/$name/report.json" "$work/rect/$name/report.json" "$name" >>"$rows" <<'PY'
+  rect_report=$work/rect/$name/report.json
+  [[ ${#variants[@]} -eq 2 ]] || rect_report=-
+  python3 - "$work/nest/$name/report.json" "$rect_report" "$name" >>"$rows" <<'PY'
 import json, sys
-n, r = (json.load(open(p)) for p in sys.argv[1:3])
+n = json.load(open(sys.argv[1]))
+r = json.load(open(sys.argv[2])) if sys.argv[2] != "-" else {
+    "layout": {"pages": n["layout"]["rectangle_pages"], "page_fill": [float("nan")] * 2},
+    "timing": {"nodes": {"layout": {"seconds": float("nan")}}}}
 ln, lr = n["layout"], r["layout"]
 def fill(l):
     f = l["page_fill"]
