@@ -323,8 +323,16 @@ PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const Orie
       if (e.flap < 0) {
         cut.push_back(a);
       } else if (e.flap_first) {
+        // Around the flap; one on part of its edge starts and ends on the edge.
+        // (A flap on part of an edge is a flap on that edge alone: its base has two points.)
+        const Flap& flap = piece.flaps[e.flap];
+        const bool partial = flap.base.size() == 2;
         cut.push_back(a);
-        for (const Vec2& q : piece.flaps[e.flap].outer) cut.push_back(to_page(q));
+        if (partial && (flap.base.front() - data.points[e.v0]).norm() > 1e-9)
+          cut.push_back(to_page(flap.base.front()));
+        for (const Vec2& q : flap.outer) cut.push_back(to_page(q));
+        if (partial && (flap.base.back() - data.points[e.v1]).norm() > 1e-9)
+          cut.push_back(to_page(flap.base.back()));
       }
       placed.edges.push_back({a, b, e.kind, e.printed, e.flap >= 0});
     }

@@ -37,7 +37,7 @@ struct PieceEdge {
 
 /// One flap of a tab: a polygon on a nearly straight run of seam edges, in the strip frame.
 struct Flap {
-  std::vector<Vec2> base;             // p_a .. p_b+1, strip frame mm
+  std::vector<Vec2> base;             // p_a .. p_b+1 (or part of one edge), strip frame mm
   std::vector<Vec2> outer;            // q_a .. q_b+1
   int tab = -1;                       // index into Piece::tabs
   std::vector<TexturePatch> texture;  // strip frame mm

@@ -167,7 +167,29 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       plan.base.push_back(point(loop[e].v1));
       length += direction(e).norm();
     }
-    const double chord = (plan.base.back() - plan.base.front()).norm();
+    // The tallest flap (up to the tab width, down to the smallest height) on `base` with
+    // ends at these angles that covers nothing; false if none does.
+    auto try_base = [&](const std::vector<Vec2>& base, double along, double start_angle,
+                        double stop_angle) {
+      const double chord = (base.back() - base.front()).norm();
+      const double h0 =
+          std::min(geometry.width, 0.9 * std::min(along, chord) /
+                                       (1 / std::tan(start_angle) + 1 / std::tan(stop_angle)));
+      for (double factor : {1.0, 0.7, 0.5, 0.35}) {
+        const double h = h0 * factor;
+        if (h < geometry.min_height) break;
+        std::vector<Vec2> outer;
+        std::vector<int> slice_edges;
+        auto slices = flap_slices(base, h, start_angle, stop_angle, &outer, &slice_edges);
+        if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
+        plan.base = base;
+        plan.outer = std::move(outer);
+        plan.slices = std::move(slices);
+        plan.slice_edges = std::move(slice_edges);
+        return true;
+      }
+      return false;
+    };
     // The configured angle first; a seam too short for a flap of the smallest height at that
     // angle gets steeper ends (a taller flap on the same base).
     for (const double base_angle : {geometry.angle, 60 * kDegree, 75 * kDegree}) {
@@ -175,20 +197,21 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       const double start_angle = end_angle(true, base_angle);
       const double stop_angle = end_angle(false, base_angle);
       if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) break;
-      const double h0 =
-          std::min(geometry.width, 0.9 * std::min(length, chord) /
-                                       (1 / std::tan(start_angle) + 1 / std::tan(stop_angle)));
-      for (double factor : {1.0, 0.7, 0.5, 0.35}) {
-        const double h = h0 * factor;
-        if (h < geometry.min_height) break;
-        std::vector<Vec2> outer;
-        std::vector<int> slice_edges;
-        auto slices = flap_slices(plan.base, h, start_angle, stop_angle, &outer, &slice_edges);
-        if (slices.empty() || slices_collide(slices, shapes, geometry.overlap_depth)) continue;
-        plan.outer = std::move(outer);
-        plan.slices = std::move(slices);
-        plan.slice_edges = std::move(slice_edges);
-        break;
+      try_base(plan.base, length, start_angle, stop_angle);
+    }
+    // A single edge with no room along its whole length (one side of a narrow V, a seam
+    // running into a notch) takes a flap on part of it: the halves, then quarters, each end
+    // first (where a V opens), the flap's own ends at the configured angle away from corners.
+    if (plan.slices.empty() && run.size() == 1 && length >= 4 * geometry.min_height) {
+      const Vec2 a = plan.base.front(), b = plan.base.back();
+      for (const auto& [t0, t1] : std::initializer_list<std::pair<double, double>>{
+               {0.5, 1.0}, {0.0, 0.5}, {0.75, 1.0}, {0.0, 0.25}, {0.25, 0.75}}) {
+        const double start_angle = t0 > 0 ? geometry.angle : end_angle(true, geometry.angle);
+        const double stop_angle = t1 < 1 ? geometry.angle : end_angle(false, geometry.angle);
+        if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) continue;
+        if (try_base({a + t0 * (b - a), a + t1 * (b - a)}, (t1 - t0) * length, start_angle,
+                     stop_angle))
+          break;
       }
     }
     if (plan.slices.empty()) continue;

@@ -195,12 +195,23 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
       for (const Tab& tab : piece.tabs) {
         ++tab_count[tab.label];
         EXPECT_FALSE(tab.flaps.empty());
-        // Every flap lies along seam edges of this piece that carry the tab's label.
+        // Every flap lies along seam edges of this piece that carry the tab's label (a flap
+        // on one edge may take part of it).
         for (const auto& base : tab.bases)
           for (std::size_t j = 0; j + 1 < base.size(); ++j) {
             bool found = false;
             for (const PlacedEdge& e : piece.edges) {
-              if ((e.a - base[j]).norm() > 1e-9 || (e.b - base[j + 1]).norm() > 1e-9) continue;
+              const double length = (e.b - e.a).norm();
+              auto on_edge = [&](const Vec2& q) {
+                const double t = (q - e.a).dot(e.b - e.a) / std::max(length * length, 1e-300);
+                return t >= -1e-9 && t <= 1 + 1e-9 &&
+                       std::abs(cross(e.b - e.a, q - e.a)) <= 1e-9 * std::max(1.0, length);
+              };
+              const bool whole =
+                  (e.a - base[j]).norm() <= 1e-9 && (e.b - base[j + 1]).norm() <= 1e-9;
+              const bool part = base.size() == 2 && on_edge(base[0]) && on_edge(base[1]) &&
+                                (base[1] - base[0]).dot(e.b - e.a) > 0;
+              if (!whole && !part) continue;
               found = true;
               EXPECT_EQ(e.kind, EdgeKind::Seam);
               EXPECT_EQ(e.label, tab.label);
@@ -614,6 +625,63 @@ TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
   EXPECT_EQ(layout.stats.joining_strips, 0);
   ASSERT_EQ(layout.warnings.size(), 1u);
   EXPECT_NE(layout.warnings[0].find("no room"), std::string::npos);
+}
+
+// Two pieces, each with a notch, glued along one straight wall of each: the notch's other side
+// bulges to 0.6 mm from the wall near its bottom, so no flap fits along the whole wall; the
+// wall that takes the tab takes it on its half at the notch's mouth, where there is room, and
+// the cut line runs along the rest of it.
+TEST(LayoutPages, BlockedWallTakesATabOnPartOfIt) {
+  const std::vector<Vec2> outline = {Vec2(0, 0),      Vec2(40, 0),  Vec2(40, 40),
+                                     Vec2(22, 40),    Vec2(20.3, 14), Vec2(21, 12),
+                                     Vec2(20, 10),    Vec2(18, 40), Vec2(0, 40)};
+  const std::vector<Triangle> triangles = {{1, 2, 3}, {1, 3, 4}, {1, 4, 5}, {1, 5, 6},
+                                           {0, 1, 6}, {0, 6, 7}, {0, 7, 8}};
+  // The first piece as drawn; the second its mirror image, the same surface seen from the other
+  // side in 3D, so that its mirrored wall is the first's wall reversed.
+  auto notched = [&](int id) {
+    FlatStrip v;
+    v.id = v.source_strip = id;
+    for (const Vec2& p : outline) {
+      v.vertices2d.push_back(id == 0 ? p : Vec2(40 - p.x(), p.y()));
+      v.vertices3d.emplace_back(p.x(), p.y(), 0.0);
+    }
+    for (Triangle t : triangles) {
+      if (id == 1) std::swap(t[1], t[2]);
+      v.triangles.push_back(t);
+    }
+    v.boundary = testing::open_boundary(v.triangles);
+    const Vec2 wall_middle(id == 0 ? 19.0 : 21.0, 25.0);
+    mark_seam(v, "V", 1 - id, [&](const Vec2& m) { return (m - wall_middle).norm() < 1e-9; });
+    return v;
+  };
+  const std::vector<FlatStrip> strips{notched(0), notched(1)};
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_EQ(layout.stats.seams, 1);
+  EXPECT_EQ(layout.stats.seams_without_tab, 0);
+  EXPECT_EQ(layout.stats.joining_strips, 0) << "a tab fits on part of the wall";
+  int flaps = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces) {
+      if (piece.tabs.empty()) continue;
+      ASSERT_EQ(piece.tabs.size(), 1u);
+      ASSERT_EQ(piece.tabs[0].bases.size(), 1u);
+      ++flaps;
+      const auto& base = piece.tabs[0].bases[0];
+      ASSERT_EQ(base.size(), 2u);
+      EXPECT_NEAR((base[1] - base[0]).norm(), 0.5 * std::hypot(2.0, 30.0), 1e-9) << "half a wall";
+      // The cut line passes through both ends of the flap's base.
+      ASSERT_EQ(piece.cut_outline.size(), 1u);
+      for (const Vec2& q : base) {
+        bool on_cut = false;
+        for (const Vec2& c : piece.cut_outline[0]) on_cut = on_cut || (c - q).norm() < 1e-9;
+        EXPECT_TRUE(on_cut) << q.transpose();
+      }
+    }
+  EXPECT_EQ(flaps, 1);
 }
 
 // A seam 1.5 mm long takes no flap of the smallest height (1 mm) at 45 degrees; steeper
