@@ -34,7 +34,8 @@ void register_proxy_decimate(Registry& registry) {
               between(0.01, 1))
           .add(
               "decimation_share", [](O & o) -> auto& { return o.decimation_share; },
-              "collapses keep the mean distance to the merged input faces' planes under this "
+              "collapses keep the root-mean-square distance to the merged input faces' planes "
+              "under this "
               "share of the proxy's distance (a heuristic; the certificate decides)",
               between(0.01, 1))
           .add(
