@@ -74,13 +74,28 @@ TEST_P(ProxyNone, ReproducesThePipelineWithoutTheStage) {
 
 INSTANTIATE_TEST_SUITE_P(Shapes, ProxyNone, ::testing::Values("pawn", "torus", "figure_eight"));
 
+std::string forced_proxy_config() {
+  return config_with(
+      "  proxy:     {impl: proxy.decimate, params: {distance_share: 0.2, decimation_share: 0.5, "
+      "min_faces: 0}, to: [segment]}\n");
+}
+
+TEST(Proxy, SameOutputWithOneAndTwoThreads) {
+  const TriangleMesh mesh = torus({.segments = 96, .tube_segments = 40});
+  const auto one = run_pipeline(mesh, "5%", "torus1", 1, forced_proxy_config());
+  const auto two = run_pipeline(mesh, "5%", "torus2", 2, forced_proxy_config());
+  ASSERT_TRUE(one.report.at("proxy").at("used").get<bool>());
+  expect_same_output(one, two);
+  EXPECT_EQ(one.report.at("proxy").at("faces"), two.report.at("proxy").at("faces"));
+  EXPECT_EQ(one.report.at("proxy").at("distance_bound"),
+            two.report.at("proxy").at("distance_bound"));
+}
+
 TEST(Proxy, WithAndWithoutAProxyBothCertifiedAgainstTheInput) {
   const std::vector<std::pair<std::string, TriangleMesh>> shapes = {
       {"sphere", sphere({.radius = 1.0, .subdivisions = 4})},
       {"torus", torus({.segments = 96, .tube_segments = 40})}};
-  const std::string forced = config_with(
-      "  proxy:     {impl: proxy.decimate, params: {distance_share: 0.2, decimation_share: 0.5, "
-      "min_faces: 0}, to: [segment]}\n");
+  const std::string forced = forced_proxy_config();
   for (const auto& [name, mesh] : shapes) {
     SCOPED_TRACE(name);
     const auto with = run_pipeline(mesh, "5%", name + "_proxy", 0, forced);
