@@ -4,6 +4,8 @@ namespace papercraft {
 
 // Defined in nodes/<stage>/<impl>_node.cpp.
 void register_load_openmesh(Registry&);
+void register_proxy_none(Registry&);
+void register_proxy_decimate(Registry&);
 void register_segment_none(Registry&);
 void register_segment_feature(Registry&);
 void register_segment_fuzzy(Registry&);
@@ -19,6 +21,8 @@ void register_export_files(Registry&);
 
 void register_builtin_nodes(Registry& registry) {
   register_load_openmesh(registry);
+  register_proxy_none(registry);
+  register_proxy_decimate(registry);
   register_segment_none(registry);
   register_segment_feature(registry);
   register_segment_fuzzy(registry);

@@ -15,14 +15,22 @@
 
 namespace papercraft {
 
-/// A loaded, validated input mesh.
+/// A loaded, validated input mesh, and the surface the strips are refined on.
 struct Model {
   static constexpr const char* kMessageName = "Model";
+  /// The input, always: the approximation's certificate, error.ply and the bake refer to it.
   std::shared_ptr<const Mesh> mesh;
+  /// The proxy stage's simplified copy of `mesh` within `proxy_distance` of it (certified
+  /// two-sided Hausdorff bound), refined in its place; null when there is no proxy.
+  std::shared_ptr<const Mesh> proxy;
+  double proxy_distance = 0.0;
   MeshSummary summary;
   std::string texture_path;
   /// Materials, texture coordinates and colours per face of `mesh` (empty when it has none).
   std::shared_ptr<const SurfaceAppearance> appearance;
+
+  /// The surface the segmentation and the refinement work on: the proxy, else the input.
+  const Mesh& refined_mesh() const { return proxy ? *proxy : *mesh; }
 };
 
 /// A connected piece of the model being refined. Its vertices carry the int property

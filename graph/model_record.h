@@ -22,6 +22,18 @@ struct MeshSummary {
   bool has_uvs = false;
 };
 
+/// What the proxy stage did (report.json "proxy"). Without a proxy (proxy.none, or a mesh
+/// already small for the tolerance) `used` is false and the strips are refined on the input.
+struct ProxySummary {
+  bool used = false;
+  std::string method = "none";  // the proxy implementation: "none", "decimate"
+  std::size_t vertices = 0;     // the proxy's (0 when not used)
+  std::size_t faces = 0;
+  double distance_bound = 0.0;  // certified upper bound of H(proxy, input); 0 when not used
+  double seconds = 0.0;         // decimation and certification
+  std::string reason;           // why no proxy is used, when none is
+};
+
 struct ModelRecord {
   /// The framework, when the loader emits the model: the input and the absolute tolerance
   /// (from the run's tolerance and the input's largest side).
@@ -36,8 +48,14 @@ struct ModelRecord {
   int strips_3d = 0;
   int flat_strips_before_merge = 0;
   int flat_strips = 0;
-  double hausdorff_bound = 0.0;  // the largest upper bound over the 3D strips
-  bool certified = false;        // every strip's bound certified (none sampled)
+  /// A certified upper bound of H(approximation, input): strips_bound plus the proxy's
+  /// distance_bound (the Hausdorff distance obeys the triangle inequality).
+  double hausdorff_bound = 0.0;
+  double strips_bound = 0.0;  // the largest upper bound over the 3D strips, to what was refined
+  bool certified = false;     // every strip's bound certified (none sampled), the proxy's too
+
+  /// proxy: the simplified surface refined in place of the input.
+  ProxySummary proxy;
 
   /// The framework, with the tolerance: mm on paper per model unit.
   double mm_per_unit = 0.0;
@@ -45,7 +63,7 @@ struct ModelRecord {
   /// layout: the pages.
   int pages = 0;
   int shelf_pages = 0;
-  int rectangle_pages = 0;  // what the rectangle packer needs for the same pieces
+  int rectangle_pages = 0;        // what the rectangle packer needs for the same pieces
   std::vector<double> page_fill;  // per page: pieces and tabs over the printable area
   int seams = 0;
   int seams_without_tab = 0;

@@ -1,5 +1,6 @@
 #include "graph/model_run.h"
 
+#include "core/errors.h"
 #include "core/printable_utf8.h"
 
 namespace papercraft {
@@ -22,6 +23,13 @@ void ModelRun::set_input(const MeshSummary& input) {
   record_.mm_per_unit = mm_per_unit;
   tolerance_.store(tolerance);
   mm_per_unit_.store(mm_per_unit);
+}
+
+void ModelRun::set_proxy_distance(double distance) {
+  if (!(distance >= 0.0 && distance < tolerance()))
+    throw InternalError("proxy distance " + std::to_string(distance) +
+                        " is not below the tolerance " + std::to_string(tolerance()));
+  proxy_distance_.store(distance);
 }
 
 PieceLimits ModelRun::piece_limits() const {

@@ -58,6 +58,14 @@ struct ModelRun {
   /// model (set_input); 0 before.
   double tolerance() const { return tolerance_.load(); }
 
+  /// The tolerance the strips are refined at: tolerance() less the proxy's certified
+  /// distance to the input (set_proxy_distance), so that strips within it of the proxy are
+  /// within tolerance() of the input.
+  double refinement_tolerance() const { return tolerance_.load() - proxy_distance_.load(); }
+  double proxy_distance() const { return proxy_distance_.load(); }
+  /// Called by the proxy stage before it emits the model. \pre 0 <= distance < tolerance().
+  void set_proxy_distance(double distance);
+
   /// Messages of this model currently in flight (framework-managed).
   std::atomic<long> in_flight{0};
 
@@ -114,6 +122,7 @@ struct ModelRun {
   mutable std::mutex mutex_;
   std::atomic<double> tolerance_{0.0};
   std::atomic<double> mm_per_unit_{0.0};
+  std::atomic<double> proxy_distance_{0.0};
   std::atomic<bool> failed_{false};
   bool internal_ = false;
   bool abandoned_ = false;

@@ -111,6 +111,7 @@ nlohmann::json model_report(const ModelRun& model) {
       {"certified", record.certified},
       {"hausdorff_bound", record.hausdorff_bound},
       {"hausdorff_bound_percent", largest > 0 ? 100.0 * record.hausdorff_bound / largest : 0.0},
+      {"strips_bound", record.strips_bound},
       {"strips_3d", record.strips_3d},
       {"flat_strips_before_merge", record.flat_strips_before_merge},
       {"flat_strips", record.flat_strips},
@@ -119,6 +120,15 @@ nlohmann::json model_report(const ModelRun& model) {
       {"segments", record.segments},
       {"cuts", record.cuts},
       {"mm_per_unit", record.mm_per_unit}};
+  const ProxySummary& proxy = record.proxy;
+  report["proxy"] = {{"method", proxy.method},
+                     {"used", proxy.used},
+                     {"vertices", proxy.vertices},
+                     {"faces", proxy.faces},
+                     {"distance_bound", proxy.distance_bound},
+                     {"refinement_tolerance", record.tolerance - proxy.distance_bound},
+                     {"seconds", proxy.seconds},
+                     {"reason", proxy.reason}};
   double fill_but_last = 0.0;
   for (std::size_t i = 0; i + 1 < record.page_fill.size(); ++i)
     fill_but_last += record.page_fill[i];
@@ -248,9 +258,9 @@ void register_export_files(Registry& registry) {
                      pixels += static_cast<long>(image.width) * image.height;
                      ++count;
                    }
-                 const double seconds = std::chrono::duration<double>(
-                                            std::chrono::steady_clock::now() - start)
-                                            .count();
+                 const double seconds =
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                         .count();
                  const double cpu_seconds = cpu.load();
                  model.update([=](ModelRecord& record) {
                    record.bake_seconds = seconds;

@@ -60,7 +60,7 @@ void register_segment_feature(Registry& registry) {
                   const FeatureNodeOptions options = table.read(params);
                   const RefineOptions refine = context.refine;
                   return make_body([options, refine](const Envelope& in, Emitter& out) {
-                    Mesh mesh = *in.get<Model>().mesh;
+                    Mesh mesh = in.get<Model>().refined_mesh();
                     tag_input_vertices(mesh);
                     std::vector<Mesh> parts = segment_feature(mesh, options.segment);
                     std::vector<Mesh> whole = segment_none(mesh);
@@ -69,7 +69,7 @@ void register_segment_feature(Registry& registry) {
                       // boundary if the parts cost fewer strips than the model whole. The parts are
                       // counted first, side by side; the model whole only up to their total (so the
                       // usual loser on creased models stops early).
-                      const double tolerance = in.model->tolerance();
+                      const double tolerance = in.model->refinement_tolerance();
                       const PieceLimits limits = in.model->piece_limits();
                       std::vector<int> counts(parts.size());
                       tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t i) {

@@ -120,10 +120,10 @@ void register_segment_fuzzy(Registry& registry) {
                   return make_body([options](const Envelope& in, Emitter& out) {
                     FuzzySegmentOptions run = options.segment;
                     if (options.strip_estimate) {
-                      run.strip_tolerance = in.model->tolerance();
+                      run.strip_tolerance = in.model->refinement_tolerance();
                       run.strip_limits = in.model->piece_limits();
                     }
-                    Mesh mesh = *in.get<Model>().mesh;
+                    Mesh mesh = in.get<Model>().refined_mesh();
                     tag_input_vertices(mesh);
                     emit_parts(in, out, segment_fuzzy(mesh, run), options.parts_ply);
                   });

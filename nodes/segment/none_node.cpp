@@ -15,7 +15,7 @@ void register_segment_none(Registry& registry) {
                 .outputs = {{"out", MessageType::of<Part>()}},
                 .create = [](const Params&, const NodeContext&) {
                   return make_body([](const Envelope& in, Emitter& out) {
-                    emit_parts(in, out, segment_none(*in.get<Model>().mesh));
+                    emit_parts(in, out, segment_none(in.get<Model>().refined_mesh()));
                   });
                 }});
 }

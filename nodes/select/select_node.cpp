@@ -33,7 +33,7 @@ NodeSpec select_spec(std::string name, std::string summary, bool exhaustive,
           const Part& part = in.get<Part>();
           Candidate candidate;
           static_cast<StripBoundaries&>(candidate) =
-              select_strip_boundaries(*part.mesh, in.model->tolerance(), refine);
+              select_strip_boundaries(*part.mesh, in.model->refinement_tolerance(), refine);
           candidate.part = part;
           out.emit("out", std::move(candidate));
         });

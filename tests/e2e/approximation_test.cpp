@@ -10,33 +10,17 @@
 #include <string>
 
 #include "core/generate.h"
-#include "graph/registry.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
-#include "support/brute_force_hausdorff.h"
+#include "graph/registry.h"
+#include "support/certified_output.h"
 #include "support/pipeline_run.h"
 
 namespace papercraft {
 namespace {
 
+using testing::expect_certified;
 using testing::run_pipeline;
-
-// Brute force never finds a distance above the reported bound, and the bound is <= tau.
-void expect_certified(const TriangleMesh& input, const testing::PipelineOutput& out) {
-  ASSERT_TRUE(out.result.ok) << out.result.error;
-  const auto& result = out.report.at("result");
-  EXPECT_TRUE(result.at("certified").get<bool>());
-  const double bound = result.at("hausdorff_bound").get<double>();
-  const double tau = out.report.at("tolerance").at("absolute").get<double>();
-  EXPECT_LE(bound, tau);
-  const TriangleMesh approximation = testing::concatenate(out.strips);
-  ASSERT_FALSE(approximation.triangles.empty());
-  const auto brute = testing::brute_force_hausdorff(input, approximation, 2);
-  EXPECT_LE(brute.distance, bound * (1 + 1e-9) + 1e-12)
-      << "brute force found a point at distance " << brute.distance << " (side " << brute.side
-      << ") above the certified bound " << bound;
-  EXPECT_EQ(static_cast<std::size_t>(result.at("strips_3d").get<long>()), out.strips.size());
-}
 
 TEST(Approximation, DevelopableSurfacesBecomeOneStrip) {
   const std::vector<std::pair<std::string, TriangleMesh>> shapes = {
@@ -120,8 +104,7 @@ TEST(Approximation, SharpSlabNeedsFewStripsAndNoSlivers) {
     for (const Triangle& t : strip.triangles) {
       double longest = 0.0;
       for (int i = 0; i < 3; ++i)
-        longest = std::max(longest,
-                           (strip.vertices[t[(i + 1) % 3]] - strip.vertices[t[i]]).norm());
+        longest = std::max(longest, (strip.vertices[t[(i + 1) % 3]] - strip.vertices[t[i]]).norm());
       shortest = std::min(shortest, longest);
     }
   EXPECT_GE(shortest, 1e-3 * tau) << "a sliver far below the tolerance";
