@@ -11,6 +11,14 @@ namespace papercraft {
 
 namespace {
 
+// A measured size in a message as a person writes it: "7.43", "1031", "52630", "3.75e+13".
+std::string rounded(double value) {
+  char text[32];
+  const double size = std::abs(value);
+  std::snprintf(text, sizeof text, size >= 100 && size < 1e9 ? "%.0f" : "%.3g", value);
+  return text;
+}
+
 // Sizes that would make a pattern no one wants: refused before the refinement starts.
 void check_sizes(const RunSettings& settings, const MeshSummary& input, double tolerance,
                  double mm_per_unit) {
@@ -18,22 +26,22 @@ void check_sizes(const RunSettings& settings, const MeshSummary& input, double t
       tolerance > kLargestTolerance * input.largest_side) {
     throw InvalidInputException(
         "tolerance " + format_number(tolerance) + " is " +
-        format_number(100.0 * tolerance / input.largest_side) +
-        "% of the model's largest side (" + format_number(input.largest_side) +
+        rounded(100.0 * tolerance / input.largest_side) + "% of the model's largest side (" +
+        rounded(input.largest_side) +
         "), above the 50% that still resembles the model; give a smaller tolerance or "
         "--allow-large-tolerance");
   }
   if (settings.page_area_mm2 <= 0.0 || settings.max_pages <= 0) return;
   const double pages = input.area * mm_per_unit * mm_per_unit / settings.page_area_mm2;
   if (pages > settings.max_pages) {
-    char estimate[32];
-    std::snprintf(estimate, sizeof estimate, "%.0f", std::ceil(pages));
-    throw InvalidInputException(
-        "the pattern would need about " + std::string(estimate) + " pages (surface " +
-        format_number(input.area) + " units^2 at " + format_number(mm_per_unit) +
-        " mm per unit over " + format_number(settings.page_area_mm2) +
-        " mm^2 printable per page), more than max_pages " + std::to_string(settings.max_pages) +
-        "; give a smaller --height or --scale, or raise --max-pages");
+    const std::string estimate =
+        pages < 1e6 ? std::to_string(static_cast<long>(std::ceil(pages))) : rounded(pages);
+    throw InvalidInputException("the pattern would need about " + estimate + " pages (surface " +
+                                rounded(input.area) + " units^2 at " + rounded(mm_per_unit) +
+                                " mm per unit over " + rounded(settings.page_area_mm2) +
+                                " mm^2 printable per page), more than max_pages " +
+                                std::to_string(settings.max_pages) +
+                                "; give a smaller --height or --scale, or raise --max-pages");
   }
 }
 
