@@ -308,7 +308,8 @@ int main_impl(int argc, char** argv) {
     }
     if (*summary) {
       const std::string extension = summary_dir.extension().string();
-      const bool job = std::filesystem::is_regular_file(summary_dir) &&
+      std::error_code unreadable;
+      const bool job = std::filesystem::is_regular_file(summary_dir, unreadable) &&
                        (extension == ".yaml" || extension == ".yml");
       return summary_command(job ? load_batch_job(summary_dir).output : summary_dir);
     }

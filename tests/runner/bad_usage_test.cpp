@@ -157,6 +157,20 @@ TEST(BadUsage, DirectoryOrMissingFileAsMeshSaysSo) {
   EXPECT_NE(missing.output.find("no such file"), std::string::npos) << missing.output;
 }
 
+// Found by fuzz_batch_job: a file name longer than the system allows made the pattern's
+// existence check throw, an internal error (exit 3) instead of the job file's fault.
+TEST(BadUsage, JobInputNameTooLongIsAJobFileError) {
+  const auto dir = testing::fresh_temp_dir("long-name");
+  std::ofstream(dir / "job.yaml") << "inputs: [" << std::string(300, 'x') << ".obj]\n";
+  const auto r = run_command("batch " + (dir / "job.yaml").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("job.yaml:1:10: no file matches"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
+  const auto summary = run_command("summary " + (dir / std::string(300, 'y')).string());
+  EXPECT_EQ(summary.exit_code, 2) << summary.output;
+  EXPECT_EQ(summary.output.find("internal error"), std::string::npos) << summary.output;
+}
+
 TEST(BadUsage, PlyClaimingBillionsOfVerticesIsRefusedAtOnce) {
   const auto dir = testing::fresh_temp_dir("huge-ply");
   for (const char* name : {"claims-4e9-vertices.ply", "claims-4e9-vertices-binary.ply"}) {
