@@ -3,7 +3,8 @@
 # needed, and runs each for SECONDS, one after the other.
 #
 #   fuzz/run.sh SECONDS [TARGET...]     # default: every target
-#   MERGE=1 fuzz/run.sh SECONDS ...     # then merge what was found back into fuzz/corpus, small
+#   MERGE=1 fuzz/run.sh SECONDS ...     # then replace fuzz/corpus/<target> by the fewest
+#                                       # inputs that reach every edge it and the run reached
 #
 # A target's run grows build-fuzz/corpus/<target> from fuzz/corpus/<target> and replays
 # fuzz/regressions/<target>; inputs that crash, hang (over 10 s), leak or pass the memory
@@ -37,8 +38,12 @@ for target in "${targets[@]}"; do
   stats=$(grep -E '^#[0-9]+' "$log" | tail -1 || true)
   echo "$target: $(( $(date +%s) - start )) s; $stats"
   if [ "${MERGE:-0}" = 1 ]; then
-    "$build/fuzz/fuzz_$target" -merge=1 -rss_limit_mb=2048 -timeout=10 \
-      "fuzz/corpus/$target" "$corpus" >>"$log" 2>&1
+    # The fewest inputs that reach every edge reached so far (edges only, not hit counts).
+    merged="$build/merged/$target"
+    rm -rf "$merged" && mkdir -p "$merged"
+    "$build/fuzz/fuzz_$target" -merge=1 -use_counters=0 -rss_limit_mb=2048 -timeout=10 \
+      "$merged" "fuzz/corpus/$target" "$corpus" >>"$log" 2>&1
+    rm -rf "fuzz/corpus/$target" && mv "$merged" "fuzz/corpus/$target"
   fi
 done
 exit $status
