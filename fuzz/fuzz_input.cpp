@@ -10,17 +10,19 @@
 namespace papercraft::fuzz {
 
 const std::filesystem::path& scratch_dir() {
-  static const std::filesystem::path dir = [] {
-    const auto path =
-        std::filesystem::temp_directory_path() / ("papercraft-fuzz-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(path);
+  // Never destroyed: the exit handler that removes the folder runs after the destructor of a
+  // static constructed around its registration.
+  static const std::filesystem::path* const dir = [] {
+    const auto* path = new std::filesystem::path(std::filesystem::temp_directory_path() /
+                                                 ("papercraft-fuzz-" + std::to_string(::getpid())));
+    std::filesystem::create_directories(*path);
     std::atexit([] {
       std::error_code ignored;
       std::filesystem::remove_all(scratch_dir(), ignored);
     });
     return path;
   }();
-  return dir;
+  return *dir;
 }
 
 std::filesystem::path write_scratch_file(const std::string& name, const std::uint8_t* data,
