@@ -57,7 +57,10 @@ ShapeEntry make_entry(std::string name, std::string description,
   }
   entry.generate = [name, fields, generator, known](const std::map<std::string, double>& values) {
     Options options{};
-    for (const auto& [key, value] : values) {
+    for (const auto& assignment : values) {
+      // Named references, not a structured binding: clang before 16 cannot capture one.
+      const std::string& key = assignment.first;
+      const double value = assignment.second;
       auto field = std::find_if(fields.begin(), fields.end(),
                                 [&](const OptionField<Options>& f) { return key == f.name; });
       if (field == fields.end()) {

@@ -16,6 +16,7 @@ struct MeshSummary {
   Vec3 box_min = Vec3::Zero();
   Vec3 box_max = Vec3::Zero();
   double largest_side = 0.0;
+  double area = 0.0;  // surface area, model units squared
   int boundary_loops = 0;
   int components = 0;
   int euler_characteristic = 0;

@@ -1,9 +1,51 @@
 #include "graph/model_run.h"
 
+#include <cmath>
+#include <cstdio>
+
 #include "core/errors.h"
 #include "core/printable_utf8.h"
+#include "graph/params.h"
 
 namespace papercraft {
+
+namespace {
+
+// A measured size in a message as a person writes it: "7.43", "1031", "52630", "3.75e+13".
+std::string rounded(double value) {
+  char text[32];
+  const double size = std::abs(value);
+  std::snprintf(text, sizeof text, size >= 100 && size < 1e9 ? "%.0f" : "%.3g", value);
+  return text;
+}
+
+// Sizes that would make a pattern no one wants: refused before the refinement starts.
+void check_sizes(const RunSettings& settings, const MeshSummary& input, double tolerance,
+                 double mm_per_unit) {
+  if (!settings.allow_large_tolerance && input.largest_side > 0.0 &&
+      tolerance > kLargestTolerance * input.largest_side) {
+    throw InvalidInputException(
+        "tolerance " + format_number(tolerance) + " is " +
+        rounded(100.0 * tolerance / input.largest_side) + "% of the model's largest side (" +
+        rounded(input.largest_side) +
+        "), above the 50% that still resembles the model; give a smaller tolerance or "
+        "--allow-large-tolerance");
+  }
+  if (settings.page_area_mm2 <= 0.0 || settings.max_pages <= 0) return;
+  const double pages = input.area * mm_per_unit * mm_per_unit / settings.page_area_mm2;
+  if (pages > settings.max_pages) {
+    const std::string estimate =
+        pages < 1e6 ? std::to_string(static_cast<long>(std::ceil(pages))) : rounded(pages);
+    throw InvalidInputException("the pattern would need about " + estimate + " pages (surface " +
+                                rounded(input.area) + " units^2 at " + rounded(mm_per_unit) +
+                                " mm per unit over " + rounded(settings.page_area_mm2) +
+                                " mm^2 printable per page), more than max_pages " +
+                                std::to_string(settings.max_pages) +
+                                "; give a smaller --height or --scale, or raise --max-pages");
+  }
+}
+
+}  // namespace
 
 ModelRun::ModelRun(int index_in, std::filesystem::path input, std::string name_in,
                    std::shared_ptr<const RunSettings> settings_in, std::size_t node_count)
@@ -16,6 +58,7 @@ ModelRun::ModelRun(int index_in, std::filesystem::path input, std::string name_i
 void ModelRun::set_input(const MeshSummary& input) {
   const double tolerance = settings->tolerance.absolute(input.largest_side);
   const double mm_per_unit = settings->paper.mm_per_unit(input.largest_side);
+  check_sizes(*settings, input, tolerance, mm_per_unit);
   std::lock_guard lock(mutex_);
   record_.loaded = true;
   record_.input = input;

@@ -28,6 +28,12 @@ struct RunSettings {
   std::string config_file;  // path or "<builtin>"
   std::string config_text;  // the YAML actually used (copied into report.json)
   PaperSpec paper;
+  /// A model whose surface area at the print scale needs more pages than this (estimated
+  /// from the printable area of one page, `page_area_mm2`) is refused before refinement.
+  int max_pages = 100;
+  double page_area_mm2 = 0.0;  // 0: not estimated
+  /// Refuse a tolerance above 50% of the largest side unless set.
+  bool allow_large_tolerance = false;
 };
 
 struct NodeStatistics {

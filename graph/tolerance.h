@@ -6,6 +6,10 @@
 
 namespace papercraft {
 
+/// The largest tolerance accepted without asking (a fraction of the largest side): beyond
+/// it the strips no longer resemble the model.
+inline constexpr double kLargestTolerance = 0.5;
+
 struct ToleranceSpec {
   double value = 0.02;
   bool relative = true;  // value is a fraction of the largest side

@@ -15,7 +15,8 @@ namespace papercraft {
 std::vector<std::filesystem::path> expand_pattern(const std::string& pattern) {
   std::vector<std::filesystem::path> out;
   if (pattern.find_first_of("*?[") == std::string::npos) {
-    if (std::filesystem::exists(pattern)) out.emplace_back(pattern);
+    std::error_code unreadable;  // a name too long, say: it matches nothing
+    if (std::filesystem::exists(pattern, unreadable)) out.emplace_back(pattern);
     return out;
   }
   glob_t matches{};

@@ -18,6 +18,7 @@
 #include "core/mesh.h"
 #include "core/printable_utf8.h"
 #include "graph/config.h"
+#include "graph/params.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
 #include "runner/batch_job.h"
@@ -33,6 +34,22 @@ struct CommonOptions {
   bool verbose = false;
   bool quiet = false;
 };
+
+// A numeric option's range, said as a person says it ("must be at least 1, got -1") rather
+// than CLI11's ranges, which print the largest double in full.
+CLI::Validator number_at_least(double minimum, bool exclusive = false) {
+  const std::string bound = (exclusive ? "greater than " : "at least ") + format_number(minimum);
+  return CLI::Validator(
+      [minimum, exclusive, bound](std::string& text) -> std::string {
+        double value = 0.0;
+        if (parse_number_prefix(text, value) != text.size() || text.empty()) {
+          return "expected a number, got '" + text + "'";
+        }
+        const bool ok = exclusive ? value > minimum : value >= minimum;
+        return ok ? std::string() : "must be " + bound + ", got " + text;
+      },
+      "NUMBER " + bound);
+}
 
 void setup_logging(const CommonOptions& common, ProgressDisplay& display) {
   auto sink = display.wrap(std::make_shared<spdlog::sinks::stderr_color_sink_mt>());
@@ -123,18 +140,18 @@ int main_impl(int argc, char** argv) {
                   "Hausdorff tolerance: 2% of the largest side, or absolute like 0.004");
   run->add_option("-o,--out", run_request.output, "output folder (default: out)");
   run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_at_least(0));
   run->add_option("--grace", run_request.grace_seconds,
                   "after SIGINT/SIGTERM, seconds the running models may take to finish before "
                   "they are abandoned (default 10)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_at_least(0));
   std::string height_text;
   auto* height = run->add_option("--height", height_text,
                                  "size of the model's largest side on paper: 200, 200mm, 20cm, "
                                  "8in (a bare number is mm)");
   double scale = 0.0;
   auto* scale_option = run->add_option("--scale", scale, "mm on paper per model unit")
-                           ->check(CLI::PositiveNumber)
+                           ->check(number_at_least(0, /*exclusive=*/true))
                            ->excludes(height);
   std::string min_width_text;
   run->add_option("--min-width", min_width_text,
@@ -144,14 +161,23 @@ int main_impl(int argc, char** argv) {
   auto* min_area_option =
       run->add_option("--min-area", min_area,
                       "no piece smaller than this many mm^2 on paper (0: no bound; default 100)")
-          ->check(CLI::NonNegativeNumber);
+          ->check(number_at_least(0));
+
+  int run_max_pages = 0;
+  auto* run_max_pages_option =
+      run->add_option("--max-pages", run_max_pages,
+                      "refuse a model whose pattern would need more pages than this, estimated "
+                      "from its surface area at the print scale (default 100)")
+          ->check(number_at_least(1));
+  run->add_flag("--allow-large-tolerance", run_request.allow_large_tolerance,
+                "accept a tolerance above 50% of the model's largest side");
 
   std::string job_file;
   auto* batch = app.add_subcommand("batch", "run a batch job file (YAML: inputs, output, ...)");
   batch->add_option("job", job_file, "job YAML")->required();
   int batch_threads = -1;
   batch->add_option("-j,--threads", batch_threads, "override the job's thread count")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_at_least(0));
   std::string batch_shard;
   batch->add_option("--shard", batch_shard,
                     "run shard I of N (like 2/4: inputs 2, 6, 10, ...); overrides the job's");
@@ -164,11 +190,22 @@ int main_impl(int argc, char** argv) {
       ->add_option("--grace", batch_grace,
                    "after SIGINT/SIGTERM, seconds the running models may take to finish "
                    "before they are abandoned (default 10)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(number_at_least(0));
   bool batch_list = false;
   batch->add_flag("--list", batch_list,
                   "print the models this shard would run (name, input file, output folder; "
                   "tab-separated) and exit");
+
+  int batch_max_pages = 0;
+  auto* batch_max_pages_option =
+      batch
+          ->add_option("--max-pages", batch_max_pages,
+                       "refuse a model whose pattern would need more pages than this "
+                       "(default 100)")
+          ->check(number_at_least(1));
+  bool batch_allow_large_tolerance = false;
+  batch->add_flag("--allow-large-tolerance", batch_allow_large_tolerance,
+                  "accept a tolerance above 50% of a model's largest side");
 
   std::filesystem::path summary_dir;
   auto* summary = app.add_subcommand(
@@ -224,6 +261,7 @@ int main_impl(int argc, char** argv) {
         }
       }
       if (*min_area_option) run_request.min_area_mm2 = min_area;
+      if (*run_max_pages_option) run_request.max_pages = run_max_pages;
       run_request.names = unique_model_names(run_request.inputs);
       return run_models(run_request, display);
     }
@@ -255,6 +293,8 @@ int main_impl(int argc, char** argv) {
       request.min_width_mm = job.min_width_mm;
       request.min_area_mm2 = job.min_area_mm2;
       request.force = batch_force;
+      if (*batch_max_pages_option) request.max_pages = batch_max_pages;
+      request.allow_large_tolerance = batch_allow_large_tolerance;
       request.grace_seconds = batch_grace;
       if (batch_list) {
         list_inputs(request);
@@ -268,7 +308,8 @@ int main_impl(int argc, char** argv) {
     }
     if (*summary) {
       const std::string extension = summary_dir.extension().string();
-      const bool job = std::filesystem::is_regular_file(summary_dir) &&
+      std::error_code unreadable;
+      const bool job = std::filesystem::is_regular_file(summary_dir, unreadable) &&
                        (extension == ".yaml" || extension == ".yml");
       return summary_command(job ? load_batch_job(summary_dir).output : summary_dir);
     }

@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -12,6 +14,7 @@
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
+#include "nodes/layout/pages.h"
 #include "runner/batch_journal.h"
 #include "runner/resume.h"
 #include "runner/sha256.h"
@@ -27,6 +30,35 @@ std::string format_number(const char* format, double value) {
   return buffer;
 }
 
+// The printable area of the layout node's page (its page and margin_mm), 0 without one.
+double printable_page_area_mm2(const PipelineConfig& config) {
+  for (const auto& node : config.nodes) {
+    if (!node.params.has("page") || !node.params.has("margin_mm")) continue;
+    const PageSize page = page_size_from_name(node.params.string("page"));
+    const double margin = node.params.number("margin_mm");
+    return std::max(0.0, page.width_mm - 2 * margin) * std::max(0.0, page.height_mm - 2 * margin);
+  }
+  return 0.0;
+}
+
+// The output folder, created, and a file written into it and removed: a folder no model can
+// write is reported once here rather than by every model's first node that writes.
+void require_writable_folder(const std::filesystem::path& folder) {
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if (ec) {
+    throw IOException(printable_utf8(folder.string()) + ": cannot create folder: " + ec.message());
+  }
+  const std::filesystem::path probe = folder / (".write-test-" + std::to_string(::getpid()));
+  std::FILE* file = std::fopen(probe.c_str(), "w");
+  if (!file) {
+    throw IOException(printable_utf8(folder.string()) + ": cannot write into the folder: " +
+                      std::strerror(errno));
+  }
+  std::fclose(file);
+  std::filesystem::remove(probe, ec);
+}
+
 std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const PipelineConfig& config) {
   auto settings = std::make_shared<RunSettings>();
   settings->tolerance = config.tolerance.value_or(ToleranceSpec{});
@@ -37,6 +69,17 @@ std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const Pipel
       throw InvalidInputException(std::string("--tolerance: ") + e.what());
     }
   }
+  const ToleranceSpec& tolerance = settings->tolerance;
+  if (tolerance.relative && tolerance.value > kLargestTolerance && !request.allow_large_tolerance) {
+    throw InvalidInputException(
+        std::string(request.tolerance.empty() ? "the config's tolerance " : "--tolerance ") +
+        tolerance.to_string() +
+        " is above 50% of the largest side, where the strips no longer resemble the model; "
+        "give a smaller tolerance or --allow-large-tolerance");
+  }
+  settings->allow_large_tolerance = request.allow_large_tolerance;
+  if (request.max_pages) settings->max_pages = *request.max_pages;
+  settings->page_area_mm2 = printable_page_area_mm2(config);
   settings->output_dir = request.output;
   settings->threads = request.threads >= 0 ? request.threads : config.threads.value_or(0);
   settings->config_file = config.file;
@@ -107,6 +150,7 @@ int run_models(const RunRequest& request, ProgressDisplay& display) {
       batch ? batch_summary_files(request.output, request.shard_index, request.shard_count)
             : run_summary_files(request.output);
   const ResultKey key = result_key(*settings);
+  require_writable_folder(request.output);
 
   // Rows in input order; the pipeline gets the ones to run.
   std::vector<BatchRow> rows;
@@ -134,12 +178,6 @@ int run_models(const RunRequest& request, ProgressDisplay& display) {
     to_run_names.push_back(request.names[i]);
   }
 
-  std::error_code ec;
-  std::filesystem::create_directories(request.output, ec);
-  if (ec) {
-    throw IOException(printable_utf8(request.output.string()) +
-                      ": cannot create folder: " + ec.message());
-  }
   spdlog::info("{} model(s){}, tolerance {}, {} thread(s), output {}", request.inputs.size(),
                skipped > 0 ? " (" + std::to_string(skipped) + " done before: skipped)" : "",
                settings->tolerance.to_string(),

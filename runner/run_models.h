@@ -31,7 +31,9 @@ struct RunRequest {
   // Paper: each set only when given (command line or job file); else the config's, else the
   // defaults of PaperSpec.
   std::optional<double> height_mm, scale, min_width_mm, min_area_mm2;
-  int shard_index = 0;  // batch: which shard this is (0-based) of shard_count
+  std::optional<int> max_pages;        // else RunSettings' default
+  bool allow_large_tolerance = false;  // accept a tolerance above 50% of the largest side
+  int shard_index = 0;                 // batch: which shard this is (0-based) of shard_count
   int shard_count = 1;
   bool force = false;           // batch: redo models an earlier run finished
   double grace_seconds = 10.0;  // SIGINT/SIGTERM: how long running models may finish

@@ -276,11 +276,12 @@ Format format_of(const std::filesystem::path& path, const std::string& file) {
 LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& options) {
   using namespace load_internal;
   const std::string file = path.string();
-  const Format format = format_of(path, file);
   std::error_code error;
   const auto status = std::filesystem::status(path, error);
   if (!std::filesystem::exists(status)) throw_io(file, "no such file");
+  if (std::filesystem::is_directory(status)) throw_io(file, "is a directory, not a mesh file");
   if (!std::filesystem::is_regular_file(status)) throw_io(file, "not a regular file");
+  const Format format = format_of(path, file);
   const std::uint64_t size = std::filesystem::file_size(path, error);
   if (error) throw_io(file, "cannot read the file size: " + error.message());
   if (size == 0) throw_invalid(file, "the file is empty");

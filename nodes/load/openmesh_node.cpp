@@ -25,6 +25,7 @@ MeshSummary summarize(const Mesh& mesh, bool has_uvs) {
     s.box_min = box[0];
     s.box_max = box[1];
     s.largest_side = (box[1] - box[0]).maxCoeff();
+    s.area = surface_area(triangles);
   }
   s.boundary_loops = static_cast<int>(boundary_loops(mesh).size());
   s.components = connected_components(mesh);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <initializer_list>
 #include <string_view>
 #include <vector>
@@ -112,6 +113,13 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
       format = std::string(tokens[0]);
       if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian") {
         throw_invalid(file, where + "unsupported PLY format " + in_quotes(format));
+      }
+      // OpenMesh reads the version as a number and never ends on one it cannot read.
+      const std::string version(tokens[1]);
+      if (version.find_first_not_of("0123456789.") != std::string::npos ||
+          std::strtod(version.c_str(), nullptr) != 1.0) {
+        throw_invalid(file,
+                      where + "unsupported PLY version " + in_quotes(version) + " (expected 1.0)");
       }
       big_endian = format == "binary_big_endian";
       openmesh_position = content_end;

@@ -94,7 +94,10 @@ std::vector<PairCandidate> shared_boundaries(const std::vector<FlatStrip>& strip
   }
 
   std::vector<PairCandidate> result;
-  for (auto& [strip_pair, pairs] : glued) {
+  for (auto& glued_pair : glued) {
+    // Named references, not a structured binding: clang before 16 cannot capture one.
+    const auto& strip_pair = glued_pair.first;
+    auto& pairs = glued_pair.second;
     const FlatStrip& x = strips[strip_pair.first];
     const FlatStrip& y = strips[strip_pair.second];
     std::sort(pairs.begin(), pairs.end());

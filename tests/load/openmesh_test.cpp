@@ -290,6 +290,17 @@ TEST_F(LoadOpenMeshTest, PlyBinaryLittleAndBigEndian) {
   expect_closed_tetrahedron(load_mesh(write("big.ply", tetra_ply_binary(true))));
 }
 
+// Found by fuzzing: OpenMesh's reader never returns on a version it cannot read as a number.
+TEST_F(LoadOpenMeshTest, PlyVersionOtherThanOneIsRefused) {
+  std::string data = tetra_ply_binary(false);
+  data.replace(data.find("1.0"), 3, "\x11.0");
+  expect_error<InvalidInputException>(write("version.ply", data),
+                                      {"version.ply", "line 2", "unsupported PLY version"});
+  std::string two = tetra_ply_binary(false);
+  two.replace(two.find("1.0"), 3, "2.0");
+  expect_error<InvalidInputException>(write("two.ply", two), {"unsupported PLY version '2.0'"});
+}
+
 TEST_F(LoadOpenMeshTest, StlAsciiIsWelded) {
   std::string text = "solid tetra\n";
   for (const auto& f : kTetraFaces) {
