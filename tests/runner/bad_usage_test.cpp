@@ -45,14 +45,14 @@ TEST(BadUsage, ValidateRefusesEveryOutOfRangeParameter) {
   const std::string layout = "params: {page: A4, margin_mm: 10}";
   for (const BadValue& bad : std::vector<BadValue>{
            {layout, "params: {page: A4, margin_mm: -5}",
-            "config.yaml:14:70: parameter 'margin_mm' of node 'layout': must be at least 0, got "
+            "config.yaml:15:70: parameter 'margin_mm' of node 'layout': must be at least 0, got "
             "-5"},
            {layout, "params: {tab_width_mm: -3}",
             "parameter 'tab_width_mm' of node 'layout': must be at least 0, got -3"},
            {layout, "params: {page: B5}",
             "unknown page size 'B5': use A3, A4, A5, Letter, Legal, Tabloid"},
            {"precision: 0.05", "precision: -1",
-            "config.yaml:10:60: parameter 'precision' of node 'hausdorff': must be greater than "
+            "config.yaml:11:60: parameter 'precision' of node 'hausdorff': must be greater than "
             "0, got -1"},
            {"tolerance: 2%", "height_mm: 0\ntolerance: 2%",
             "config.yaml:4:12: height_mm must be greater than 0"}}) {

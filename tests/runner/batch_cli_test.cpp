@@ -200,9 +200,17 @@ TEST(BatchCli, SigtermAbandonsRunningModelsAndResumeRunsTheRest) {
 TEST(BatchCli, SignalDuringALongNodeCallExitsWithinSeconds) {
   const auto dir = testing::fresh_temp_dir("hardexit");
   generate("sphere", dir / "big.off", "--param subdivisions=7");  // 327,680 faces
+  // segment.fuzzy on the whole mesh (no proxy: its one long call is the segmentation's).
+  std::string config = read_text(kSource + "/configs/segment-fuzzy.yaml");
+  const auto proxy = config.find("impl: proxy.decimate,");
+  ASSERT_NE(proxy, std::string::npos);
+  const auto params_end = config.find("}, to:", proxy);
+  ASSERT_NE(params_end, std::string::npos);
+  config.replace(proxy, params_end + 2 - proxy, "impl: proxy.none,");
+  std::ofstream(dir / "fuzzy.yaml") << config;
   std::ofstream(dir / "job.yaml") << "inputs: [big.off]\noutput: out\ntolerance: 0.5%\n"
                                      "threads: 1\nconfig: "
-                                  << kSource << "/configs/segment-fuzzy.yaml\n";
+                                  << (dir / "fuzzy.yaml").string() << "\n";
   const pid_t pid =
       testing::spawn_command({"batch", (dir / "job.yaml").string(), "--grace", "0"}, dir / "log");
   ASSERT_GT(pid, 0);
