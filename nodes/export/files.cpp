@@ -100,11 +100,21 @@ std::string strips_json(const std::vector<FlatStrip>& strips) {
   return root.dump(1) + "\n";
 }
 
+namespace {
+
+// A piece's page transform: strip vertices2d -> page mm.
+nlohmann::json transform_json(const PageTransform& t) {
+  return {{"linear", {t.linear(0, 0), t.linear(0, 1), t.linear(1, 0), t.linear(1, 1)}},
+          {"translation", {t.translation.x(), t.translation.y()}},
+          {"rotation_degrees", t.rotation_degrees}};
+}
+
+}  // namespace
+
 std::string pieces_json(const PatternLayout& layout) {
   nlohmann::json pieces = nlohmann::json::array();
   for (std::size_t page = 0; page < layout.pages.size(); ++page) {
     for (const PlacedPiece& piece : layout.pages[page].pieces) {
-      const auto& t = piece.transform;
       nlohmann::json seams = nlohmann::json::array();
       for (const PieceSeam& seam : piece.seams)
         seams.push_back({{"label", seam.label}, {"partner", seam.partner}, {"tab", seam.tab}});
@@ -114,24 +124,17 @@ std::string pieces_json(const PatternLayout& layout) {
            {"piece_index", piece.piece_index},
            {"piece_count", piece.piece_count},
            {"page", page + 1},
-           {"transform",
-            {{"linear", {t.linear(0, 0), t.linear(0, 1), t.linear(1, 0), t.linear(1, 1)}},
-             {"translation", {t.translation.x(), t.translation.y()}},
-             {"rotation_degrees", t.rotation_degrees}}},
+           {"transform", transform_json(piece.transform)},
            {"seams", std::move(seams)}});
     }
   }
   nlohmann::json joints = nlohmann::json::array();
   for (std::size_t page = 0; page < layout.pages.size(); ++page) {
     for (const PlacedPiece& joint : layout.pages[page].joints) {
-      const auto& t = joint.transform;
       joints.push_back(
           {{"seam", joint.name},
            {"page", page + 1},
-           {"transform",
-            {{"linear", {t.linear(0, 0), t.linear(0, 1), t.linear(1, 0), t.linear(1, 1)}},
-             {"translation", {t.translation.x(), t.translation.y()}},
-             {"rotation_degrees", t.rotation_degrees}}},
+           {"transform", transform_json(joint.transform)},
            {"outline", joint.vertices}});
     }
   }
