@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -150,7 +151,12 @@ BatchJob load_batch_job(const std::filesystem::path& path) {
                key + "'");
     }
   };
-  if (root["threads"]) job.threads = static_cast<int>(number("threads", 0));
+  if (root["threads"]) {
+    const double threads = number("threads", 0);
+    if (threads > 100000 || threads != std::floor(threads))
+      fail(path, root["threads"], "expected a whole number of threads from 0 to 100000");
+    job.threads = static_cast<int>(threads);
+  }
   if (root["height_mm"]) {
     job.height_mm = number("height_mm", 0);
     if (*job.height_mm <= 0) fail(path, root["height_mm"], "expected a height_mm > 0");

@@ -171,6 +171,20 @@ TEST(BadUsage, JobInputNameTooLongIsAJobFileError) {
   EXPECT_EQ(summary.output.find("internal error"), std::string::npos) << summary.output;
 }
 
+// Found by fuzz_batch_job: a thread count beyond int was converted with undefined behaviour.
+TEST(BadUsage, JobThreadsBeyondAnyMachineIsAJobFileError) {
+  const auto dir = testing::fresh_temp_dir("job-threads");
+  small_mesh(dir);
+  for (const char* threads : {"15555555555555", "2.5"}) {
+    std::ofstream(dir / "job.yaml") << "inputs: [cylinder.obj]\noutput: out\nthreads: " << threads << "\n";
+    const auto r = run_command("batch " + (dir / "job.yaml").string());
+    EXPECT_EQ(r.exit_code, 2) << threads << "\n" << r.output;
+    EXPECT_NE(r.output.find("job.yaml:3:10: expected a whole number of threads from 0 to 100000"),
+              std::string::npos)
+        << r.output;
+  }
+}
+
 TEST(BadUsage, PlyClaimingBillionsOfVerticesIsRefusedAtOnce) {
   const auto dir = testing::fresh_temp_dir("huge-ply");
   for (const char* name : {"claims-4e9-vertices.ply", "claims-4e9-vertices-binary.ply"}) {
