@@ -2,20 +2,19 @@
 // The "proxy" stage: a simplified copy of the input, certified close to it, refined in its
 // place (DESIGN.md section 6, "A certified proxy").
 //
-// The input is decimated by halfedge collapses (OpenMesh's Decimater) ordered by Garland and
-// Heckbert's quadric error (1997) divided by the area it gathers: the mean squared distance of
-// the kept vertex to the planes of the input faces merged into it, allowed up to d^2 with
-// d = decimation_share * e; collapses that turn a face by more than 60 degrees are refused.
-// Boundary vertices are locked, so boundaries and the topology stay as they are. That is a
-// heuristic; the certificate is the two-sided bounded Hausdorff distance H(proxy, input),
-// computed to within e / 10 (nodes/hausdorff/bounded.h) over the triangles of both surfaces,
-// and required <= e. A proxy that fails is made again with d halved, up to `attempts` times.
+// The input is decimated by halfedge collapses in passes of independent collapses
+// (nodes/proxy/collapse.h) ordered by Garland and Heckbert's quadric error (1997) divided by the
+// area it gathers: the mean squared distance of the kept vertex to the planes of the input faces
+// merged into it, allowed up to d^2 with d = decimation_share * e; collapses that turn a face by
+// more than 60 degrees are refused. Boundary vertices are locked, so boundaries and the topology
+// stay as they are. That is a heuristic; the certificate is the two-sided bounded Hausdorff
+// distance H(proxy, input), computed to within e / 10 (nodes/hausdorff/bounded.h) over the
+// triangles of both surfaces, and required <= e. A proxy that fails is made again with d halved, up to `attempts` times.
 //
 // With H(proxy, input) <= e and strips certified within tau - e of the proxy, the strips are
 // within tau of the input: the Hausdorff distance obeys the triangle inequality.
 //
-// Known limit: the decimation is sequential (one thread) and OpenMesh's, about 1.3 s per 100k
-// input faces.
+// Known limit: the decimation is sequential (one thread).
 
 #include <cstddef>
 #include <string>
