@@ -19,6 +19,7 @@ struct Mask {
   int width = 0;
   int height = 0;
   std::vector<std::vector<std::pair<int, int>>> rows;
+  std::vector<int> widest;  // per row, the longest interval
   long cells = 0;
 };
 
@@ -91,7 +92,9 @@ Mask rasterise(const NestShape& shape, double angle, double cell) {
         merged.push_back(interval);
     }
     row = std::move(merged);
-    for (const auto& [a, b] : row) mask.cells += b - a;
+    int widest = 0;
+    for (const auto& [a, b] : row) mask.cells += b - a, widest = std::max(widest, b - a);
+    mask.widest.push_back(widest);
   }
   return mask;
 }
@@ -103,7 +106,9 @@ class Sheet {
       : width_(width),
         height_(height),
         used_(std::size_t(width) * height, 0),
-        run_(std::size_t(width) * height) {
+        run_(std::size_t(width) * height),
+        max_run_(height, 0),
+        free_cells_(long(width) * height) {
     for (int y = 0; y < height_; ++y) update_row(y);
   }
 
@@ -111,16 +116,30 @@ class Sheet {
   // `bound` (exclusive); false when none does.
   bool find(const Mask& mask, int bound, int* out_x, int* out_y) const {
     if (mask.width > width_ || mask.height > height_) return false;
+    if (mask.cells > free_cells_) return false;
+    // The row that failed last is tried first: where a row of the mask meets an occupied
+    // cell, the next offsets usually fail on the same row. Any failing row gives a jump that
+    // skips only offsets that fail, so the order of the rows does not change the answer.
+    int hot = 0;
     for (int oy = 0; oy + mask.height <= height_ && oy + mask.height < bound; ++oy) {
+      // No offset on this row when a row of the mask is wider than every free run it meets.
+      if (max_run_[oy + hot] < mask.widest[hot]) continue;
+      bool possible = true;
+      for (int r = 0; r < mask.height && possible; ++r)
+        if (max_run_[oy + r] < mask.widest[r]) possible = false, hot = r;
+      if (!possible) continue;
       int ox = 0;
       while (ox + mask.width <= width_) {
         int next = -1;
-        for (int r = 0; r < mask.height && next < 0; ++r) {
+        for (int k = -1; k < mask.height && next < 0; ++k) {
+          const int r = k < 0 ? hot : k;
+          if (k == hot) continue;
           const int* run = &run_[std::size_t(oy + r) * width_];
           for (const auto& [a, b] : mask.rows[r]) {
             const int free = run[ox + a];
             if (free < b - a) {
-              next = ox + a + free + 1 - a;
+              next = ox + free + 1;
+              hot = r;
               break;
             }
           }
@@ -142,9 +161,13 @@ class Sheet {
       for (const auto& [a, b] : mask.rows[r]) {
         const int y0 = std::max(0, oy + r - grow), y1 = std::min(height_ - 1, oy + r + grow);
         const int x0 = std::max(0, ox + a - grow), x1 = std::min(width_, ox + b + grow);
-        for (int y = y0; y <= y1; ++y)
-          std::fill(used_.begin() + std::size_t(y) * width_ + x0,
-                    used_.begin() + std::size_t(y) * width_ + x1, 1);
+        for (int y = y0; y <= y1; ++y) {
+          char* row = used_.data() + std::size_t(y) * width_;
+          for (int x = x0; x < x1; ++x) {
+            free_cells_ -= row[x] == 0;
+            row[x] = 1;
+          }
+        }
         y_lo = std::min(y_lo, y0);
         y_hi = std::max(y_hi, y1);
       }
@@ -154,16 +177,20 @@ class Sheet {
 
  private:
   void update_row(int y) {
-    int free = 0;
+    int free = 0, longest = 0;
     for (int x = width_ - 1; x >= 0; --x) {
       free = used_[std::size_t(y) * width_ + x] ? 0 : free + 1;
       run_[std::size_t(y) * width_ + x] = free;
+      longest = std::max(longest, free);
     }
+    max_run_[y] = longest;
   }
 
   int width_, height_;
   std::vector<char> used_;
   std::vector<int> run_;
+  std::vector<int> max_run_;  // per row, the longest free run
+  long free_cells_;  // cells not yet used
 };
 
 }  // namespace
