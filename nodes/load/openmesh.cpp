@@ -287,6 +287,7 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
   if (size == 0) throw_invalid(file, "the file is empty");
 
   Prescan scan;
+  RawMesh raw;
   {
     FileScanner in(path, file, size);
     switch (format) {
@@ -294,7 +295,7 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
         scan = prescan_obj(in, file, path, options);
         break;
       case Format::off:
-        scan = prescan_off(in, file, options);
+        scan = prescan_off(in, file, options, &raw);
         break;
       case Format::ply:
         scan = prescan_ply(in, file, options);
@@ -304,7 +305,7 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
         break;
     }
   }
-  RawMesh raw = read_with_openmesh(path, file, scan);
+  if (!scan.read_natively) raw = read_with_openmesh(path, file, scan);
   return validate_and_build(raw, scan, options, file, path);
 }
 

@@ -13,7 +13,9 @@
 //      truncation, more data than declared), binary records walked (truncation), header layouts
 //      OpenMesh misreads refused;
 //   2. OpenMesh's reader fills a recording importer (recording_importer.h) that keeps the raw
-//      vertex positions, face index lists and texture coordinates, dropping nothing;
+//      vertex positions, face index lists and texture coordinates, dropping nothing; a plain
+//      ascii OFF (no ST, C or N prefix) is instead read by its pre-scan itself, in the same
+//      pass and in double precision (OpenMesh's OFF reader reads single precision);
 //   3. the raw data is triangulated (triangulate.h), validated and repaired (repair.h), and the
 //      `Mesh` is built with add_face.
 // OpenMesh's reader objects are process-wide singletons with per-file state, so step 2 is

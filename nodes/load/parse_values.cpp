@@ -46,7 +46,7 @@ bool equals_ignoring_case(std::string_view a, std::string_view b) {
   return a.size() == b.size() && starts_with_ignoring_case(a, b);
 }
 
-NumberKind classify_float(std::string_view token, float* value) {
+NumberKind classify_float(std::string_view token, float* value, double* exact) {
   if (!token.empty() && token.front() == '+') token.remove_prefix(1);
   if (token.empty()) return NumberKind::invalid;
   double number = 0.0;
@@ -63,6 +63,7 @@ NumberKind classify_float(std::string_view token, float* value) {
   }
   if (!std::isfinite(number) || std::fabs(number) > FLT_MAX) return NumberKind::non_finite;
   if (value != nullptr) *value = static_cast<float>(number);
+  if (exact != nullptr) *exact = number;
   return NumberKind::finite;
 }
 

@@ -23,8 +23,9 @@ enum class NumberKind { finite, non_finite, invalid };
 /// Classifies a token as OpenMesh's `stream >> float` reads it: NaN, infinities and magnitudes
 /// beyond single precision make its readers fail or drop the record, so they count as non-finite;
 /// an underflow reads as zero, as it does for OpenMesh. A finite number is also stored in `*value`
-/// when `value` is given.
-NumberKind classify_float(std::string_view token, float* value = nullptr);
+/// when `value` is given, and in double precision in `*exact` when `exact` is given.
+NumberKind classify_float(std::string_view token, float* value = nullptr,
+                          double* exact = nullptr);
 /// Reads the whole token (optionally signed) as an integer; false when it is not one.
 bool parse_integer(std::string_view token, std::int64_t& value);
 /// a * b, or UINT64_MAX when that overflows.

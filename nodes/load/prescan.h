@@ -8,6 +8,7 @@
 
 #include "nodes/load/file_scanner.h"
 #include "nodes/load/openmesh.h"
+#include "nodes/load/raw_mesh.h"
 
 namespace papercraft::load_internal {
 
@@ -26,6 +27,9 @@ struct Prescan {
   std::string ply_texture;                 // PLY "comment TextureFile <name>"
   bool off_comments = false;               // an ascii OFF with '#' comments
   std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
+  /// The pre-scan read the records itself (a plain ascii OFF given a RawMesh): OpenMesh's reader
+  /// is not needed.
+  bool read_natively = false;
 };
 
 /// Throws InvalidInputException when `faces` is over options.max_faces or `vertices` more than
@@ -48,7 +52,11 @@ void check_some_faces(const std::string& file, const Prescan& scan);
 Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesystem::path& path,
                     const LoadOptions& options);
 /// OFF, ascii or "OFF BINARY": the header, the counts against the file size, every record.
-Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options);
+/// Given `raw`, a plain ascii OFF (no ST, C or N prefix) is also read into it, positions in
+/// double precision, and `read_natively` is set: one pass over the file instead of two, and no
+/// single-precision reader in between.
+Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options,
+                    RawMesh* raw = nullptr);
 /// PLY, ascii or binary: the header (layouts OpenMesh misreads refused), the counts against the
 /// file size, the records of every element up to the faces.
 Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options);

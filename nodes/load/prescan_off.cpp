@@ -1,6 +1,8 @@
 // The pre-scan of an OFF file, ascii or "OFF BINARY".
 
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <string_view>
 
 #include "nodes/load/messages.h"
@@ -28,7 +30,8 @@ bool next_off_line(FileScanner& in, std::string_view& line, bool& comments) {
 
 }  // namespace
 
-Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options) {
+Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options,
+                    RawMesh* raw) {
   Prescan scan;
   scan.format = Format::off;
   std::string_view line;
@@ -142,6 +145,14 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
              add_saturating(multiply_saturating(vertices, 6), multiply_saturating(faces, 8)),
              in.remaining());
   check_counts(file, vertices, faces, options);
+  // A plain OFF is read here; with prefixes OpenMesh's reader reads the extra values.
+  if (raw != nullptr && prefix != 0) raw = nullptr;
+  if (raw != nullptr) {
+    *raw = RawMesh();
+    raw->positions.reserve(vertices);
+    raw->face_start.reserve(faces + 1);
+    raw->corners.reserve(3 * faces);
+  }
 
   for (std::uint64_t vertex = 0; vertex < vertices; ++vertex) {
     if (!next_off_line(in, line, scan.off_comments)) {
@@ -150,9 +161,10 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
                               counted(vertex, "vertex line", "vertex lines"));
     }
     std::string_view tokens = line;
+    double position[3];
     for (int value = 0; value < (normals ? 6 : 3); ++value) {
       const std::string_view token = next_token(tokens);
-      const NumberKind kind = classify_float(token);
+      const NumberKind kind = classify_float(token, nullptr, value < 3 ? &position[value] : nullptr);
       if (kind == NumberKind::non_finite) {
         throw_invalid(file, at_line(in.line_number()) + "vertex " + std::to_string(vertex) +
                                 " has a non-finite " + (value < 3 ? "coordinate " : "normal ") +
@@ -165,6 +177,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
                                 in_quotes(line));
       }
     }
+    if (raw != nullptr) raw->positions.emplace_back(position[0], position[1], position[2]);
   }
   for (std::uint64_t face = 0; face < faces; ++face) {
     if (!next_off_line(in, line, scan.off_comments)) {
@@ -191,7 +204,12 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
         throw_invalid(file, at_line(in.line_number()) + "expected a vertex index in face " +
                                 std::to_string(face) + ", got " + in_quotes(token));
       }
+      // An index is kept as an int vertex handle (one beyond int is out of range anyway).
+      if (raw != nullptr)
+        raw->corners.push_back(static_cast<int>(std::clamp<std::int64_t>(
+            index, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())));
     }
+    if (raw != nullptr) raw->face_start.push_back(raw->corners.size());
     // Without the C prefix OpenMesh reads faces token by token, so trailing values (colors)
     // would be taken for the next face.
     // They are dropped before OpenMesh reads the file (`Prescan::off_face_extras`).
@@ -203,6 +221,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
                             ", but more data follows at line " + std::to_string(in.line_number()) +
                             " (wrong counts?)");
   }
+  scan.read_natively = raw != nullptr;
   return scan;
 }
 
