@@ -227,8 +227,19 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
       }
     }
   }
+  // Per cell: whether any of its 27 cells holds boundary (most cells of a wide piece do not,
+  // and then no sample in them is near the boundary).
+  std::unordered_map<Cell, bool, CellHash> boundary_around;
   auto near_boundary = [&](const Vec3& p) {
     const Cell c = cell_of(p, radius);
+    auto [around, added] = boundary_around.try_emplace(c, false);
+    if (added) {
+      for (std::int64_t dx = -1; dx <= 1 && !around->second; ++dx)
+        for (std::int64_t dy = -1; dy <= 1 && !around->second; ++dy)
+          for (std::int64_t dz = -1; dz <= 1 && !around->second; ++dz)
+            around->second = boundary.count({c[0] + dx, c[1] + dy, c[2] + dz}) > 0;
+    }
+    if (!around->second) return false;
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy)
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
@@ -240,11 +251,17 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
     return false;
   };
   std::unordered_map<Cell, std::vector<Vec3>, CellHash> centres;
-  for (const Sample& s : samples)
-    if (!near_boundary(s.point)) centres[cell_of(s.point, radius)].push_back(s.point);
+  std::vector<char> is_centre(samples.size(), 0);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (near_boundary(samples[i].point)) continue;
+    is_centre[i] = 1;
+    centres[cell_of(samples[i].point, radius)].push_back(samples[i].point);
+  }
   if (centres.empty()) return 1.0;
   double narrow = 0.0;
-  for (const Sample& s : samples) {
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Sample& s = samples[i];
+    if (is_centre[i]) continue;  // a centre covers itself
     const Cell c = cell_of(s.point, radius);
     bool covered = false;
     for (std::int64_t dx = -1; dx <= 1 && !covered; ++dx)
