@@ -298,7 +298,7 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
         scan = prescan_off(in, file, options, &raw);
         break;
       case Format::ply:
-        scan = prescan_ply(in, file, options);
+        scan = prescan_ply(in, file, options, &raw);
         break;
       case Format::stl:
         scan = prescan_stl(in, file, options);

@@ -27,8 +27,8 @@ struct Prescan {
   std::string ply_texture;                 // PLY "comment TextureFile <name>"
   bool off_comments = false;               // an ascii OFF with '#' comments
   std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
-  /// The pre-scan read the records itself (a plain ascii OFF given a RawMesh): OpenMesh's reader
-  /// is not needed.
+  /// The pre-scan read the records itself (a plain ascii OFF or binary PLY, given a RawMesh):
+  /// OpenMesh's reader is not needed.
   bool read_natively = false;
 };
 
@@ -59,7 +59,11 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
                     RawMesh* raw = nullptr);
 /// PLY, ascii or binary: the header (layouts OpenMesh misreads refused), the counts against the
 /// file size, the records of every element up to the faces.
-Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options);
+/// Given `raw`, a binary PLY whose vertices have only positions (and normals) and whose faces
+/// only their index lists is also read into it, positions in double precision, and
+/// `read_natively` is set.
+Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options,
+                    RawMesh* raw = nullptr);
 /// STL, binary when the size is 84 + 50 * triangles, else ascii: every triangle's corners.
 Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions& options);
 

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <initializer_list>
+#include <limits>
 #include <string_view>
 #include <vector>
 
@@ -62,9 +64,37 @@ bool is_one_of(std::string_view name, std::initializer_list<std::string_view> na
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+// A binary vertex or face record's real number: IEEE single or double, either byte order.
+double decode_real(const unsigned char* bytes, int size, bool big_endian) {
+  const auto bits = static_cast<std::uint64_t>(decode_integer(bytes, size, false, big_endian));
+  if (size == 4) {
+    const auto narrow = static_cast<std::uint32_t>(bits);
+    float value = 0.0f;
+    std::memcpy(&value, &narrow, sizeof value);
+    return value;
+  }
+  double value = 0.0;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+// Whether the pre-scan reads a binary PLY itself: a vertex element of scalar positions (and
+// normals, which nothing uses) followed by a face element with only its vertex index list.
+// Anything else (colours, texture coordinates, other elements before the faces) goes to
+// OpenMesh's reader.
+bool plain_binary_ply(const std::vector<PlyElement>& elements, std::size_t read_elements) {
+  if (read_elements != 2 || elements[0].name != "vertex" || elements[1].name != "face")
+    return false;
+  for (const PlyProperty& property : elements[0].properties)
+    if (property.is_list || !is_one_of(property.name, {"x", "y", "z", "nx", "ny", "nz"}))
+      return false;
+  return elements[1].properties.size() == 1 && elements[1].properties[0].is_vertex_indices;
+}
+
 }  // namespace
 
-Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options) {
+Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options,
+                    RawMesh* raw) {
   Prescan scan;
   scan.format = Format::ply;
   // The header's bytes as read, to find where OpenMesh's reader will look for binary data.
@@ -301,6 +331,67 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
                             ", but the data ends in " + element.name + " " +
                             std::to_string(record) + " (of " + std::to_string(element.count) + ")");
   };
+
+  if (!ascii && raw != nullptr && plain_binary_ply(elements, read_elements)) {
+    *raw = RawMesh();
+    const PlyElement& vertex = elements[0];
+    const PlyElement& face = elements[1];
+    std::size_t record = 0, offset[3] = {0, 0, 0};
+    int size[3] = {0, 0, 0};
+    for (const PlyProperty& property : vertex.properties) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (property.name == std::string_view("xyz" + axis, 1)) {
+          offset[axis] = record;
+          size[axis] = property.type->bytes;
+        }
+      }
+      record += static_cast<std::size_t>(property.type->bytes);
+    }
+    raw->positions.reserve(vertex.count);
+    constexpr std::uint64_t kChunk = 1 << 16;  // records read at once
+    std::vector<unsigned char> bytes(record * std::min<std::uint64_t>(vertex.count, kChunk));
+    for (std::uint64_t r = 0; r < vertex.count; r += kChunk) {
+      const std::uint64_t n = std::min(kChunk, vertex.count - r);
+      if (!in.read_bytes(bytes.data(), record * n)) truncated(vertex, r);
+      for (std::uint64_t k = 0; k < n; ++k) {
+        const unsigned char* at = bytes.data() + k * record;
+        raw->positions.emplace_back(decode_real(at + offset[0], size[0], big_endian),
+                                    decode_real(at + offset[1], size[1], big_endian),
+                                    decode_real(at + offset[2], size[2], big_endian));
+      }
+    }
+    const PlyProperty& list = face.properties[0];
+    raw->face_start.reserve(face.count + 1);
+    raw->corners.reserve(3 * face.count);
+    std::vector<unsigned char> entries;
+    for (std::uint64_t r = 0; r < face.count; ++r) {
+      unsigned char count_bytes[8];
+      if (!in.read_bytes(count_bytes, list.count_type->bytes)) truncated(face, r);
+      const std::int64_t count = decode_integer(count_bytes, list.count_type->bytes,
+                                                list.count_type->is_signed, big_endian);
+      if (count < 0) {
+        throw_invalid(file, face.name + " " + std::to_string(r) + " has a negative " + list.name +
+                                " count (" + std::to_string(count) + ")");
+      }
+      const std::uint64_t length =
+          multiply_saturating(static_cast<std::uint64_t>(count), list.type->bytes);
+      if (length > in.remaining()) truncated(face, r);
+      entries.resize(length);
+      if (!in.read_bytes(entries.data(), length)) truncated(face, r);
+      for (std::int64_t k = 0; k < count; ++k) {
+        const std::int64_t index = decode_integer(entries.data() + k * list.type->bytes,
+                                                  list.type->bytes, list.type->is_signed,
+                                                  big_endian);
+        // Kept as an int vertex handle (one beyond int is out of range anyway).
+        raw->corners.push_back(static_cast<int>(std::clamp<std::int64_t>(
+            index, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())));
+      }
+      raw->face_start.push_back(raw->corners.size());
+      scan.corners += static_cast<std::uint64_t>(count);
+    }
+    scan.read_natively = true;
+    return scan;
+  }
 
   if (!ascii) {
     for (std::size_t i = 0; i < read_elements; ++i) {

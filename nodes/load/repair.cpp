@@ -3,13 +3,13 @@
 
 #include "nodes/load/repair.h"
 
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <array>
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <unordered_map>
 #include <utility>
@@ -127,16 +127,36 @@ std::size_t merge_duplicate_vertices(Soup& soup, double epsilon) {
   std::iota(target.begin(), target.end(), 0);
   const std::vector<Vec3d>& p = soup.positions;
   if (epsilon <= 0.0) {
-    std::vector<int> order(n);
-    std::iota(order.begin(), order.end(), 0);
-    tbb::parallel_sort(order.begin(), order.end(), [&](int a, int b) {
+    // Each vertex goes to the first vertex of its exact position (-0 equals 0; a NaN
+    // coordinate equals nothing): an open-addressing table of vertex indices by position.
+    auto normal = [&](std::size_t v, int axis) { return p[v][axis] == 0.0 ? 0.0 : p[v][axis]; };
+    auto hash = [&](std::size_t v) {
+      std::uint64_t h = 0;
       for (int axis = 0; axis < 3; ++axis) {
-        if (p[a][axis] != p[b][axis]) return p[a][axis] < p[b][axis];
+        const double x = normal(v, axis);
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &x, sizeof x);
+        h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+        h ^= h >> 29;
       }
-      return a < b;
-    });
-    for (std::size_t i = 1; i < n; ++i) {
-      if (p[order[i]] == p[order[i - 1]]) target[order[i]] = target[order[i - 1]];
+      return h;
+    };
+    std::size_t size = 16;
+    while (size < 2 * n) size *= 2;
+    std::vector<int> table(size, -1);
+    for (std::size_t v = 0; v < n; ++v) {
+      if (std::isnan(p[v][0]) || std::isnan(p[v][1]) || std::isnan(p[v][2])) continue;
+      for (std::size_t slot = hash(v) & (size - 1);; slot = (slot + 1) & (size - 1)) {
+        const int other = table[slot];
+        if (other < 0) {
+          table[slot] = static_cast<int>(v);
+          break;
+        }
+        if (p[other] == p[v]) {
+          target[v] = other;
+          break;
+        }
+      }
     }
   } else {
     // Grid of cell size epsilon: a duplicate lies in one of the 27 cells around a vertex.
@@ -213,15 +233,28 @@ void check_duplicate_triangles(const Soup& soup, const std::string& file) {
     Triangle3 sorted;
     int triangle;
   };
+  // Sorted by (sorted vertices, triangle): bucketed by the lowest vertex in triangle order (a
+  // counting sort), then each bucket, a vertex's few triangles, stably sorted by the rest.
   std::vector<Key> keys(soup.triangles.size());
-  for (std::size_t t = 0; t < keys.size(); ++t) {
-    keys[t].sorted = soup.triangles[t];
-    std::sort(keys[t].sorted.begin(), keys[t].sorted.end());
-    keys[t].triangle = static_cast<int>(t);
+  {
+    std::vector<std::uint32_t> start(soup.positions.size() + 1, 0);
+    std::vector<Triangle3> sorted(soup.triangles.size());
+    for (std::size_t t = 0; t < sorted.size(); ++t) {
+      sorted[t] = soup.triangles[t];
+      std::sort(sorted[t].begin(), sorted[t].end());
+      ++start[sorted[t][0] + 1];
+    }
+    for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < sorted.size(); ++t)
+      keys[fill[sorted[t][0]]++] = {sorted[t], static_cast<int>(t)};
+    for (std::size_t v = 0; v + 1 < start.size(); ++v)
+      std::stable_sort(keys.begin() + start[v], keys.begin() + start[v + 1],
+                       [](const Key& a, const Key& b) {
+                         return a.sorted[1] != b.sorted[1] ? a.sorted[1] < b.sorted[1]
+                                                           : a.sorted[2] < b.sorted[2];
+                       });
   }
-  tbb::parallel_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-    return a.sorted != b.sorted ? a.sorted < b.sorted : a.triangle < b.triangle;
-  });
   std::uint64_t duplicates = 0;
   std::size_t first = 0;
   for (std::size_t i = 1; i < keys.size(); ++i) {
@@ -247,18 +280,29 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
     std::uint64_t key;
     std::uint32_t slot;  // 3 * triangle + k
   };
+  // Every edge use, sorted by (key, slot): bucketed by the lower vertex in slot order (a
+  // counting sort), then each bucket, a vertex's few edges, stably sorted by the higher vertex.
   std::vector<EdgeUse> uses(3 * triangles);
-  for (std::size_t t = 0; t < triangles; ++t) {
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint32_t>(soup.triangles[t][k]);
-      const auto b = static_cast<std::uint32_t>(soup.triangles[t][(k + 1) % 3]);
-      uses[3 * t + k] = {(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b),
-                         static_cast<std::uint32_t>(3 * t + k)};
+  {
+    std::vector<std::uint32_t> start(soup.positions.size() + 1, 0);
+    auto lower = [&](std::size_t slot) {
+      const int a = soup.triangles[slot / 3][slot % 3];
+      const int b = soup.triangles[slot / 3][(slot % 3 + 1) % 3];
+      return static_cast<std::uint32_t>(std::min(a, b));
+    };
+    for (std::size_t slot = 0; slot < uses.size(); ++slot) ++start[lower(slot) + 1];
+    for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t slot = 0; slot < uses.size(); ++slot) {
+      const auto a = static_cast<std::uint32_t>(soup.triangles[slot / 3][slot % 3]);
+      const auto b = static_cast<std::uint32_t>(soup.triangles[slot / 3][(slot % 3 + 1) % 3]);
+      uses[fill[std::min(a, b)]++] = {(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b),
+                                      static_cast<std::uint32_t>(slot)};
     }
+    for (std::size_t v = 0; v + 1 < start.size(); ++v)
+      std::stable_sort(uses.begin() + start[v], uses.begin() + start[v + 1],
+                       [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
   }
-  tbb::parallel_sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.key != y.key ? x.key < y.key : x.slot < y.slot;
-  });
 
   auto edge_vertices = [&](std::uint64_t key) {
     return std::to_string(soup.source_vertex[key >> 32]) + "-" +
