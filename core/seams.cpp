@@ -243,7 +243,8 @@ void label_seams(std::vector<FlatStrip>& strips, const SeamOptions& options) {
   }
 
   // Chains: an edge and the next one along its strip's boundary share a label when both are
-  // glued to one strip where their partners are consecutive too.
+  // glued to one strip where their partners are consecutive too: the other way round, or, for
+  // partners that run the same way (strips of opposite orientation), the same way.
   UnionFind chains(static_cast<std::size_t>(edge_count));
   for (int g = 0; g < edge_count; ++g)
     if (partner[g] >= 0) chains.unite(g, partner[g]);
@@ -259,7 +260,10 @@ void label_seams(std::vector<FlatStrip>& strips, const SeamOptions& options) {
       for (auto it = from; it != to; ++it) {
         const int h = it->second;
         if (partner[h] < 0 || refs[partner[h]].strip != refs[partner[g]].strip) continue;
-        if (edge(partner[h]).v1 != edge(partner[g]).v0) continue;
+        const bool same_way = start(partner[g]) == start(g) && start(partner[h]) == start(h);
+        if (same_way ? edge(partner[h]).v0 != edge(partner[g]).v1
+                     : edge(partner[h]).v1 != edge(partner[g]).v0)
+          continue;
         chains.unite(g, h);
       }
     }

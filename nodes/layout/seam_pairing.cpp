@@ -69,7 +69,10 @@ std::vector<Chain> seam_chains(const std::vector<Piece>& pieces,
           const auto& ra = seams.refs[pa];
           const auto& rb = seams.refs[pb];
           const int m = static_cast<int>(pieces[ra[0]].loops[ra[1]].size());
-          return rb[0] == ra[0] && rb[1] == ra[1] && rb[2] == (ra[2] + m - 1) % m;
+          // Consecutive the other way round, or the same way where the partners run the same
+          // way (pieces of opposite orientation; the labels already say they are one chain).
+          return rb[0] == ra[0] && rb[1] == ra[1] &&
+                 (rb[2] == (ra[2] + m - 1) % m || rb[2] == (ra[2] + 1) % m);
         }
         if (pa >= 0 || pb >= 0) return false;
         // Unmatched: one chain unless the second edge comes straight back in 3D.

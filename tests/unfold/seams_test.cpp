@@ -226,6 +226,28 @@ TEST(LabelSeams, ALabelNamesOneChainBetweenTwoStrips) {
   }
 }
 
+// Two strips of opposite orientation (the second is the first mirrored across their shared
+// side, its triangles listed alike): their boundaries run the same way along the seam, which is
+// still one chain with one label, the same three edges on both sides.
+TEST(LabelSeams, PartnersRunningTheSameWayAreOneChain) {
+  std::vector<FlatStrip> strips = {quad(0, 0.0, 3.0, 0.0, 1.0, {1.0, 2.0}),
+                                   quad(1, 0.0, 3.0, 0.0, -1.0, {1.0, 2.0})};
+  label_seams(strips);
+  std::set<std::string> labels[2];
+  for (int k = 0; k < 2; ++k)
+    for (const BoundaryEdge& e : strips[k].boundary)
+      if (e.kind == EdgeKind::Seam) {
+        EXPECT_EQ(e.neighbour_strip, 1 - k);
+        labels[k].insert(e.label);
+      }
+  EXPECT_EQ(labels[0], (std::set<std::string>{"A1"}));
+  EXPECT_EQ(labels[1], labels[0]);
+  const std::vector<SeamChain> chains = labelled_chains(strips);
+  ASSERT_EQ(chains.size(), 1u);
+  EXPECT_EQ(chains[0].sides[0].edges.size(), 3u);
+  EXPECT_EQ(chains[0].sides[1].edges.size(), 3u);
+}
+
 // Two separate shared boundaries get two labels, numbered in strip order.
 TEST(LabelSeams, SeparateBoundariesGetSeparateLabels) {
   const int n = 8;
