@@ -287,8 +287,10 @@ std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, con
     long last = 0;
   };
   std::vector<Fill> fills(orders);
+  std::vector<std::vector<int>> order_of(orders);
   tbb::parallel_for(0, orders, [&](int by) {
-    std::vector<int> order(shapes.size());
+    std::vector<int>& order = order_of[by];
+    order.resize(shapes.size());
     std::vector<double> key(shapes.size());
     for (std::size_t i = 0; i < shapes.size(); ++i) {
       order[i] = static_cast<int>(i);
@@ -298,13 +300,26 @@ std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, con
     Fill& fill = fills[by];
     fill.placements = fill_in_order(masks, order, width, height, grow, cell, &fill.pages, &fill.last);
   });
+  auto better = [](const Fill& a, const Fill& b) {
+    return a.pages < b.pages || (a.pages == b.pages && a.last < b.last);
+  };
   std::size_t best = 0;
   for (std::size_t k = 1; k < fills.size(); ++k)
-    if (fills[k].pages < fills[best].pages ||
-        (fills[k].pages == fills[best].pages && fills[k].last < fills[best].last))
-      best = k;
-  *pages = fills[best].pages;
-  return std::move(fills[best].placements);
+    if (better(fills[k], fills[best])) best = k;
+  Fill kept = std::move(fills[best]);
+  std::vector<int> order = std::move(order_of[best]);
+  for (int repack = 0; repack < options.repacks && kept.pages > 1; ++repack) {
+    std::stable_partition(order.begin(), order.end(), [&](int i) {
+      return kept.placements[i].page == kept.pages - 1;
+    });
+    Fill again;
+    again.placements =
+        fill_in_order(masks, order, width, height, grow, cell, &again.pages, &again.last);
+    if (!better(again, kept)) break;
+    kept = std::move(again);
+  }
+  *pages = kept.pages;
+  return std::move(kept.placements);
 }
 
 }  // namespace papercraft::layout_internal

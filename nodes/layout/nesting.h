@@ -5,7 +5,10 @@
 // coming nearer than the spacing to any piece already there; so pieces go into the
 // concavities of others, which packing by bounding rectangles leaves empty. "Largest" is
 // tried three ways (area, longest side, bounding rectangle; side by side on the threads
-// there are) and the fill with the fewest pages and the emptiest last page is kept.
+// there are) and the fill with the fewest pages and the emptiest last page is kept. Then the
+// pieces of its last page are moved to the front of its order and the fill made again, as long
+// as that needs fewer pages or leaves less on the last page (`repacks` times at most): the
+// pieces no earlier page had room for get the first choice of room.
 
 #include <array>
 #include <vector>
@@ -27,6 +30,8 @@ struct NestOptions {
   /// Fills tried, largest first by area, by longest side, by bounding rectangle (1..3); the
   /// one needing the fewest pages, then leaving the least on the last page, is kept.
   int orders = 3;
+  /// Fills made again with the last page's pieces first (0: none).
+  int repacks = 3;
 };
 
 /// Where a piece goes: page, and the map from its frame to the printable area (mm, origin at

@@ -481,7 +481,56 @@ std::vector<int> strips_exceeding_page(const std::vector<FlatStrip>& strips,
   return ids;
 }
 
+namespace {
+
+// A strip that fits the page but packs badly: longer than half the page's long side and thin
+// or bent (its area under 40% of its box, or the box over 3 times as long as wide).
+bool long_and_thin(const StripData& data, const Prepared& p) {
+  const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
+  bool fits = false;
+  const OrientedBox box = tightest_box(convex_hull(piece_points(data, data.triangles)), w, h, &fits);
+  double area = 0.0;
+  for (const int t : data.triangles) {
+    const Triangle& tri = data.strip->triangles[t];
+    const Vec2 a = data.points[tri[1]] - data.points[tri[0]];
+    const Vec2 b = data.points[tri[2]] - data.points[tri[0]];
+    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+  }
+  const double length = box.size.maxCoeff(), width = box.size.minCoeff();
+  return fits && length > 0.5 * std::max(w, h) &&
+         (area < 0.4 * box.size.prod() || length > 3.0 * width);
+}
+
+// The layout, with `split_long` also long and thin strips that fit the page split in parts
+// fitting half of it (*split counts them).
+PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
+                          bool split_long, int* split);
+
+}  // namespace
+
 PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
+  int split = 0;
+  PatternLayout layout = layout_with(strips, options, false, &split);
+  if (options.packing != PackingMethod::Nest || !options.split_long_strips ||
+      layout.pages.size() < 2)
+    return layout;
+  PatternLayout halves = layout_with(strips, options, true, &split);
+  // Worth it where every page saved costs at most three more pieces to cut and glue.
+  const int saved = static_cast<int>(layout.pages.size()) - static_cast<int>(halves.pages.size());
+  if (split == 0 || saved <= 0 || split > 3 * saved) return layout;
+  halves.warnings.push_back(std::to_string(split) + " long thin " +
+                            (split == 1 ? "strip was" : "strips were") +
+                            " split in parts of half a page, which saves " +
+                            std::to_string(saved) + " of " +
+                            std::to_string(layout.pages.size()) + " pages");
+  return halves;
+}
+
+namespace {
+
+PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
+                          bool split_long, int* split) {
+  *split = 0;
   Prepared p = prepare(strips, options);
   PatternLayout layout;
   layout.page = options.page;
@@ -504,7 +553,13 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     }
     ++number;
     std::vector<std::vector<int>> sets;
-    if (strip_fits(data, p)) {
+    if (strip_fits(data, p) && split_long && long_and_thin(data, p)) {
+      const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
+      // Half the page: its long side halved.
+      sets = h >= w ? split_to_fit(data, w, 0.5 * h, used_labels)
+                    : split_to_fit(data, 0.5 * w, h, used_labels);
+      if (sets.size() > 1) ++*split;
+    } else if (strip_fits(data, p)) {
       sets.push_back(data.triangles);
     } else {
       const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
@@ -666,6 +721,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     nest.spacing_mm = options.spacing_mm;
     nest.rotations = options.nest_rotations;
     nest.cell_mm = options.nest_cell_mm;
+    nest.repacks = options.nest_repacks;
     nested = nest_shapes(shapes, p.area, nest, &nested_pages);
     const bool complete = std::all_of(nested.begin(), nested.end(),
                                       [](const NestPlacement& n) { return n.page >= 0; });
@@ -706,5 +762,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   layout.stats = layout_stats(layout, p.area);
   return layout;
 }
+
+}  // namespace
 
 }  // namespace papercraft

@@ -80,6 +80,10 @@ struct LayoutOptions {
   PackingMethod packing = PackingMethod::Nest;
   int nest_rotations = 24;    // Nest: rotations tried (every 360 / n degrees; never mirrored)
   double nest_cell_mm = 0.5;  // Nest: raster cell
+  int nest_repacks = 3;       // Nest: fills made again with the last page's pieces first
+  /// Nest: lay out again with long thin strips (longer than half the page) split in parts of
+  /// half a page, and keep that where it saves pages, at least one per three strips split.
+  bool split_long_strips = true;
 };
 
 /// Lays out `strips` on pages (see the file comment for conventions).

@@ -76,6 +76,14 @@ ParamTable<O> layout_table(bool nesting) {
         .add(
             "nest_cell_mm", [](O & o) -> auto& { return o.nest_cell_mm; },
             "raster cell of the nesting (finer packs tighter, slower)", greater_than(0))
+        .add(
+            "nest_repacks", [](O & o) -> auto& { return o.nest_repacks; },
+            "fills made again with the last page's pieces first while that saves paper",
+            between(0, 10))
+        .add(
+            "split_long_strips", [](O & o) -> auto& { return o.split_long_strips; },
+            "lay out again with long thin strips split in parts of half a page; kept where "
+            "that needs fewer pages")
         .choice(
             "packing", [](O & o) -> auto& { return o.packing; },
             std::vector<std::pair<std::string, PackingMethod>>{

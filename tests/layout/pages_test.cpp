@@ -568,6 +568,34 @@ TEST(LayoutPages, CurvedStripIsSplitIntoPiecesThatFit) {
             0.6 * *std::max_element(areas.begin(), areas.end()));
 }
 
+// Long thin arcs (C shapes) that fit the page one at a time: laid out again with each split
+// in halves that fit half a page, they need fewer pages, and the layout keeps that (every
+// split strip printed as Na and Nb, a note saying so); with split_long_strips off it does not.
+TEST(LayoutPages, LongThinStripsAreSplitWhereThatSavesPages) {
+  std::vector<FlatStrip> strips;  // four C shapes 180 mm across: one per page
+  for (int k = 0; k < 4; ++k) strips.push_back(arc_strip(k, 80, 90, 270 * M_PI / 180, 60));
+  LayoutOptions options;
+  options.scale = 1;
+  options.split_long_strips = false;
+  const PatternLayout whole = layout_pages(strips, options);
+  expect_valid_layout(whole, strips, options);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(pieces_of(whole, k).size(), 1u);
+  options.split_long_strips = true;
+  const PatternLayout split = layout_pages(strips, options);
+  expect_valid_layout(split, strips, options);
+  EXPECT_LT(split.pages.size(), whole.pages.size());
+  for (int k = 0; k < 4; ++k) {
+    const auto pieces = pieces_of(split, k);
+    ASSERT_EQ(pieces.size(), 2u) << "strip " << k;
+    EXPECT_EQ(pieces[0]->name.back() == 'a' ? pieces[1]->name.back() : pieces[0]->name.back(), 'b');
+  }
+  EXPECT_TRUE(std::any_of(split.warnings.begin(), split.warnings.end(), [](const std::string& w) {
+    return w.find("split in parts of half a page") != std::string::npos;
+  }));
+  std::cout << "[ pages    ] long arcs: " << whole.pages.size() << " pages whole, "
+            << split.pages.size() << " split\n";
+}
+
 // A U-shaped piece whose slot walls are glued to each other: the tab shrinks to fit in a
 // 2.4 mm slot and is dropped (with a warning) in a 0.8 mm one.
 TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
