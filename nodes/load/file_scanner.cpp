@@ -58,6 +58,7 @@ bool FileScanner::next_line(std::string_view& line) {
 }
 
 bool FileScanner::read_bytes(void* out, std::size_t count) {
+  if (count == 0) return true;  // `out` may be null then
   while (end_ - begin_ < count) {
     if (!fill()) return false;
   }

@@ -373,18 +373,23 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
         throw_invalid(file, face.name + " " + std::to_string(r) + " has a negative " + list.name +
                                 " count (" + std::to_string(count) + ")");
       }
-      const std::uint64_t length =
-          multiply_saturating(static_cast<std::uint64_t>(count), list.type->bytes);
-      if (length > in.remaining()) truncated(face, r);
-      entries.resize(length);
-      if (!in.read_bytes(entries.data(), length)) truncated(face, r);
-      for (std::int64_t k = 0; k < count; ++k) {
-        const std::int64_t index = decode_integer(entries.data() + k * list.type->bytes,
-                                                  list.type->bytes, list.type->is_signed,
-                                                  big_endian);
-        // Kept as an int vertex handle (one beyond int is out of range anyway).
-        raw->corners.push_back(static_cast<int>(std::clamp<std::int64_t>(
-            index, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())));
+      if (multiply_saturating(static_cast<std::uint64_t>(count), list.type->bytes) >
+          in.remaining())
+        truncated(face, r);
+      // In bounded runs: a face may claim millions of corners.
+      constexpr std::int64_t kRun = 4096;
+      for (std::int64_t k = 0; k < count; k += kRun) {
+        const std::int64_t n = std::min(kRun, count - k);
+        entries.resize(static_cast<std::size_t>(n) * list.type->bytes);
+        if (!in.read_bytes(entries.data(), entries.size())) truncated(face, r);
+        for (std::int64_t j = 0; j < n; ++j) {
+          const std::int64_t index = decode_integer(entries.data() + j * list.type->bytes,
+                                                    list.type->bytes, list.type->is_signed,
+                                                    big_endian);
+          // Kept as an int vertex handle (one beyond int is out of range anyway).
+          raw->corners.push_back(static_cast<int>(std::clamp<std::int64_t>(
+              index, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())));
+        }
       }
       raw->face_start.push_back(raw->corners.size());
       scan.corners += static_cast<std::uint64_t>(count);

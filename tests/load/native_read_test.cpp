@@ -172,6 +172,25 @@ TEST(NativePly, ColouredOrAsciiPlyGoesToOpenMesh) {
   EXPECT_FALSE(reads->native);
 }
 
+// Found by fuzz_load_ply (UBSan: a null pointer given to memcpy): a face listing no corners is
+// read as an empty face, and load_mesh refuses the file with a message.
+TEST(NativePly, FaceWithoutCornersIsAnEmptyRecordAndRefused) {
+  const fs::path file = fs::path(PAPERCRAFT_SOURCE_DIR) /
+                        "fuzz/regressions/load_ply/native-binary-face-without-corners.ply";
+  RawMesh raw;
+  FileScanner in(file, file.string(), fs::file_size(file));
+  const Prescan scan = prescan_ply(in, file.string(), {}, &raw);
+  ASSERT_TRUE(scan.read_natively);
+  ASSERT_EQ(raw.n_faces(), 2u);
+  EXPECT_EQ(raw.face_start[1] - raw.face_start[0], 0u);
+  try {
+    load_mesh(file);
+    FAIL() << "a face without corners was accepted";
+  } catch (const InvalidInputException& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+}
+
 // Every binary PLY of the fuzzing corpus that the pre-scan accepts and whose indices are in
 // range reads the same both ways.
 TEST(NativePly, FuzzCorpusMatchesOpenMesh) {
