@@ -115,7 +115,8 @@ TEST(PipelineStop, TimesAndNames) {
     EXPECT_GE(r.work_seconds, 4 * 0.020) << "four sleeps of 20 ms";
     EXPECT_GE(r.wall_seconds, 4 * 0.020) << "one sleep at a time";
   }
-  EXPECT_EQ(results[0].queue_seconds < 0.05, true) << results[0].queue_seconds;
+  // The first model waited for no other (no bound in seconds: a loaded machine delays it).
+  EXPECT_LT(results[0].queue_seconds, results[1].queue_seconds);
   // One model in flight: the second waited for the first.
   EXPECT_GE(results[1].queue_seconds, results[0].wall_seconds * 0.9);
 
