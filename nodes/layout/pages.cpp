@@ -492,29 +492,33 @@ bool long_and_thin(const StripData& data, const Prepared& p) {
   double area = 0.0;
   for (const int t : data.triangles) {
     const Triangle& tri = data.strip->triangles[t];
-    const Vec2 a = data.points[tri[1]] - data.points[tri[0]];
-    const Vec2 b = data.points[tri[2]] - data.points[tri[0]];
-    area += 0.5 * std::abs(a.x() * b.y() - a.y() * b.x());
+    area += 0.5 * std::abs(cross(data.points[tri[1]] - data.points[tri[0]],
+                                 data.points[tri[2]] - data.points[tri[0]]));
   }
   const double length = box.size.maxCoeff(), width = box.size.minCoeff();
   return fits && length > 0.5 * std::max(w, h) &&
          (area < 0.4 * box.size.prod() || length > 3.0 * width);
 }
 
+struct LongStrips {
+  int found = 0;  // strips that fit the page but are long and thin
+  int split = 0;  // of those, split in parts of half a page
+};
+
 // The layout, with `split_long` also long and thin strips that fit the page split in parts
-// fitting half of it (*split counts them).
+// fitting half of it; *long_strips counts them.
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                          bool split_long, int* split);
+                          bool split_long, LongStrips* long_strips);
 
 }  // namespace
 
 PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
-  int split = 0;
-  PatternLayout layout = layout_with(strips, options, false, &split);
-  if (options.packing != PackingMethod::Nest || !options.split_long_strips ||
-      layout.pages.size() < 2)
-    return layout;
-  PatternLayout halves = layout_with(strips, options, true, &split);
+  LongStrips whole, parts;
+  PatternLayout layout = layout_with(strips, options, false, &whole);
+  // No long thin strip is found unless nesting with split_long_strips.
+  if (layout.pages.size() < 2 || whole.found == 0) return layout;
+  PatternLayout halves = layout_with(strips, options, true, &parts);
+  const int split = parts.split;
   // Worth it where every page saved costs at most three more pieces to cut and glue.
   const int saved = static_cast<int>(layout.pages.size()) - static_cast<int>(halves.pages.size());
   if (split == 0 || saved <= 0 || split > 3 * saved) return layout;
@@ -529,8 +533,8 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
 namespace {
 
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                          bool split_long, int* split) {
-  *split = 0;
+                          bool split_long, LongStrips* long_strips) {
+  *long_strips = LongStrips();
   Prepared p = prepare(strips, options);
   PatternLayout layout;
   layout.page = options.page;
@@ -553,13 +557,17 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
     }
     ++number;
     std::vector<std::vector<int>> sets;
-    if (strip_fits(data, p) && split_long && long_and_thin(data, p)) {
+    const bool fits = strip_fits(data, p);
+    const bool long_thin = fits && options.packing == PackingMethod::Nest &&
+                           options.split_long_strips && long_and_thin(data, p);
+    long_strips->found += long_thin;
+    if (long_thin && split_long) {
       const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
       // Half the page: its long side halved.
       sets = h >= w ? split_to_fit(data, w, 0.5 * h, used_labels)
                     : split_to_fit(data, 0.5 * w, h, used_labels);
-      if (sets.size() > 1) ++*split;
-    } else if (strip_fits(data, p)) {
+      long_strips->split += sets.size() > 1;
+    } else if (fits) {
       sets.push_back(data.triangles);
     } else {
       const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;

@@ -191,26 +191,29 @@ TEST(NativePly, FaceWithoutCornersIsAnEmptyRecordAndRefused) {
   }
 }
 
-// Every binary PLY of the fuzzing corpus that the pre-scan accepts and whose indices are in
-// range reads the same both ways.
-TEST(NativePly, FuzzCorpusMatchesOpenMesh) {
+// Compares both reads of every file of fuzz/corpus/load_<format> and its regressions that the
+// pre-scan reads natively with indices in range; returns how many it compared.
+int compare_fuzz_corpus(const std::string& format) {
   int compared = 0;
-  for (const char* folder : {"/fuzz/corpus/load_ply", "/fuzz/regressions/load_ply"}) {
-    const fs::path dir = fs::path(PAPERCRAFT_SOURCE_DIR + std::string(folder));
+  for (const std::string folder : {"corpus", "regressions"}) {
+    const fs::path dir = fs::path(PAPERCRAFT_SOURCE_DIR) / "fuzz" / folder / ("load_" + format);
     if (!fs::is_directory(dir)) continue;
     for (const auto& entry : fs::directory_iterator(dir)) {
       std::ifstream in(entry.path(), std::ios::binary);
       const std::string text((std::istreambuf_iterator<char>(in)), {});
-      const TempFile file(text, ".ply");
+      const TempFile file(text, "." + format);
       const auto reads = both_reads(file.path);
       if (!reads || !reads->native || !indices_in_range(reads->raw)) continue;
       expect_same_records(*reads, entry.path().filename().string());
       ++compared;
     }
   }
-  EXPECT_GT(compared, 3);
-  std::printf("compared %d files\n", compared);
+  return compared;
 }
+
+// Every binary PLY of the fuzzing corpus that the pre-scan accepts and whose indices are in
+// range reads the same both ways.
+TEST(NativePly, FuzzCorpusMatchesOpenMesh) { EXPECT_GT(compare_fuzz_corpus("ply"), 3); }
 
 TEST(NativeOff, GeneratedShapesMatchOpenMeshAndKeepDoublePrecision) {
   for (const std::string& name : shape_names()) {
@@ -248,23 +251,7 @@ TEST(NativeOff, PrefixedOffGoesToOpenMesh) {
 
 // Every OFF of the fuzzing corpus that the pre-scan accepts and whose indices are in range
 // reads the same both ways.
-TEST(NativeOff, FuzzCorpusMatchesOpenMesh) {
-  int compared = 0;
-  for (const char* folder : {"/fuzz/corpus/load_off", "/fuzz/regressions/load_off"}) {
-    const fs::path dir = fs::path(PAPERCRAFT_SOURCE_DIR + std::string(folder));
-    if (!fs::is_directory(dir)) continue;
-    for (const auto& entry : fs::directory_iterator(dir)) {
-      std::ifstream in(entry.path(), std::ios::binary);
-      const std::string text((std::istreambuf_iterator<char>(in)), {});
-      const TempFile file(text);
-      const auto reads = both_reads(file.path);
-      if (!reads || !reads->native || !indices_in_range(reads->raw)) continue;
-      expect_same_records(*reads, entry.path().filename().string());
-      ++compared;
-    }
-  }
-  EXPECT_GT(compared, 20);
-}
+TEST(NativeOff, FuzzCorpusMatchesOpenMesh) { EXPECT_GT(compare_fuzz_corpus("off"), 20); }
 
 // With PAPERCRAFT_MESHES set (bench/cgal_meshes.sh prints such a folder), every *.off in it.
 TEST(NativeOff, MeshFolderMatchesOpenMesh) {
