@@ -413,24 +413,20 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (placed) break;
     }
-    // Farther out, anywhere around a point of the seam (its middle first: a seam in a narrow
-    // slit is reached from the slit's mouth), with a leader line from the seam to the text:
-    // the line leaves the seam outwards and crosses no cut line, piece, tab or text.
-    for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9, 0.0, 1.0}) {
-      if (placed) break;
-      Vec2 along;
-      const Vec2 anchor = point_at(fraction * total, &along);
-      const Vec2 outward(along.y(), -along.x());
+    // Farther out, anywhere around `anchor` (a point of the seam or of its tab's outer
+    // edge), with a leader line from there to the text: the line leaves outwards and crosses
+    // no cut line, piece, tab or text.
+    auto leader_outside = [&](const Vec2& anchor, const Vec2& along, const Vec2& outward) {
       const double size = smallest;
       for (double radius : {4.0, 6.0, 8.0, 11.0, 15.0, 20.0, 26.0}) {
-        for (int step = 0; step <= 34 && !placed; ++step) {
+        for (int step = 0; step <= 34; ++step) {
           // 0, +10, -10, +20, -20, ... degrees from the outward normal, to +-170.
           const double turn = (step % 2 == 1 ? 1 : -1) * ((step + 1) / 2) * 10.0 * kDegree;
           const Vec2 ray = std::cos(turn) * outward + std::sin(turn) * along;
           const Vec2 centre = anchor + radius * ray;
           const auto candidate = text_box(centre, along, size, label.text.size());
           if (!fits_outside(candidate)) continue;
-          // The line from the seam to where it meets the text box, stopping short of it.
+          // The line from the anchor to where it meets the text box, stopping short of it.
           const auto parts = segment_outside(anchor, centre, candidate);
           if (parts.empty()) continue;
           const Vec2 start = anchor + 0.2 * ray;
@@ -450,6 +446,71 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
           label.direction = along;
           label.size = size;
           label.outside = true;
+          label.leader = {anchor, end};
+          taken.push_back(candidate);
+          taken.push_back(leader_box(label.leader));
+          return true;
+        }
+      }
+      return false;
+    };
+    // From the seam, its middle first: a seam in a narrow slit is reached from the slit's
+    // mouth.
+    for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9, 0.0, 1.0}) {
+      if (placed) break;
+      Vec2 along;
+      const Vec2 anchor = point_at(fraction * total, &along);
+      placed = leader_outside(anchor, along, Vec2(along.y(), -along.x()));
+    }
+    // From the middle of the outer edge of the seam's tab on this side: the seam itself is
+    // walled in by its tab, but the tab names its seam as well.
+    for (const PieceTab& tab : piece.tabs) {
+      if (placed || tab.label != label.text) continue;
+      for (int f : tab.flaps) {
+        const Flap& flap = piece.flaps[f];
+        if (placed || flap.base.size() < 2 || flap.outer.size() < 2) continue;
+        const std::size_t i = (flap.outer.size() - 1) / 2;
+        const Vec2 a = flap.outer[i], b = flap.outer[i + 1];
+        if ((b - a).norm() < 1e-9) continue;
+        const Vec2 along = (b - a).normalized();
+        Vec2 outward(along.y(), -along.x());
+        Vec2 inside = Vec2::Zero();
+        for (const Vec2& q : flap.base) inside += q;
+        inside /= static_cast<double>(flap.base.size());
+        if (outward.dot(inside - a) > 0) outward = -outward;
+        placed = leader_outside(0.5 * (a + b), along, outward);
+      }
+    }
+    // On the piece farther in, with a leader line from the seam: a seam round a small hole or
+    // in a crowded corner has no room next to it, but the paper around it often has. The line
+    // stays on the piece (it crosses no cut line) and crosses no text; fold lines it may cross.
+    for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
+      if (placed) break;
+      Vec2 along;
+      const Vec2 anchor = point_at(fraction * total, &along);
+      const Vec2 inward(-along.y(), along.x());
+      const double size = smallest;
+      for (double radius : {5.0, 7.0, 9.0, 12.0, 15.0, 19.0, 24.0, 30.0}) {
+        for (int step = 0; step <= 34 && !placed; ++step) {
+          // 0, +10, -10, ... degrees from the inward normal, to +-170.
+          const double turn = (step % 2 == 1 ? 1 : -1) * ((step + 1) / 2) * 10.0 * kDegree;
+          const Vec2 ray = std::cos(turn) * inward + std::sin(turn) * along;
+          const Vec2 centre = anchor + radius * ray;
+          const auto candidate = text_box(centre, along, size, label.text.size());
+          if (!fits(candidate)) continue;
+          const auto parts = segment_outside(anchor, centre, candidate);
+          if (parts.empty()) continue;
+          const Vec2 start = anchor + 0.2 * ray;
+          const Vec2 end = parts.front()[1] - 0.3 * ray;
+          if ((end - start).dot(ray) <= 0.1) continue;
+          bool free = true;
+          for (const auto& line : lines)
+            free = free && !segments_cross(start, end, line[0], line[1]);
+          for (const auto& other : taken) free = free && !segment_crosses(start, end, other);
+          if (!free) continue;
+          label.position = centre;
+          label.direction = along;
+          label.size = size;
           label.leader = {anchor, end};
           taken.push_back(candidate);
           taken.push_back(leader_box(label.leader));

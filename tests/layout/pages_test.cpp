@@ -286,6 +286,36 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
         EXPECT_FALSE(polygons_overlap(pa, pb))
             << "labels " << names[a] << " and " << names[b] << " overlap on page " << p;
       }
+    // A leader line (from a seam or its tab to a label away from it) crosses no cut line of
+    // the page once it has left its start, and no other label.
+    std::vector<std::array<Vec2, 2>> cuts;
+    for (const auto* pieces : {&page.pieces, &page.joints})
+      for (const PlacedPiece& piece : *pieces)
+        for (const auto& loop : piece.cut_outline)
+          for (std::size_t i = 0; i < loop.size(); ++i)
+            cuts.push_back({loop[i], loop[(i + 1) % loop.size()]});
+    auto crosses = [](const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+      const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+      const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+      return ((d1 > 1e-12 && d2 < -1e-12) || (d1 < -1e-12 && d2 > 1e-12)) &&
+             ((d3 > 1e-12 && d4 < -1e-12) || (d3 < -1e-12 && d4 > 1e-12));
+    };
+    for (const PlacedPiece& piece : page.pieces)
+      for (const Label& label : piece.labels) {
+        if (label.leader.size() < 2) continue;
+        const Vec2 direction = (label.leader.back() - label.leader.front()).normalized();
+        const Vec2 start = label.leader.front() + 0.1 * direction, end = label.leader.back();
+        for (const auto& cut : cuts)
+          EXPECT_FALSE(crosses(start, end, cut[0], cut[1]))
+              << "the leader of " << label.text << " crosses a cut line on page " << p;
+        const auto own = label_box(label);
+        for (std::size_t a = 0; a < boxes.size(); ++a) {
+          if (boxes[a] == own) continue;
+          for (int i = 0; i < 4; ++i)
+            EXPECT_FALSE(crosses(start, end, boxes[a][i], boxes[a][(i + 1) % 4]))
+                << "the leader of " << label.text << " crosses label " << names[a];
+        }
+      }
     // No two pieces (with their tabs) overlap.
     for (std::size_t a = 0; a < shapes.size(); ++a)
       for (std::size_t b = a + 1; b < shapes.size(); ++b)
