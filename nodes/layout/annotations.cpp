@@ -413,39 +413,34 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (placed) break;
     }
-    // Farther out, anywhere around `anchor` (a point of the seam or of its tab's outer
-    // edge), with a leader line from there to the text: the line leaves outwards and crosses
-    // no cut line, piece, tab or text.
-    auto leader_outside = [&](const Vec2& anchor, const Vec2& along, const Vec2& outward) {
+    // A leader line from `anchor` to a text box at `radius` (in order) along a ray turned 0,
+    // +10, -10, +20, ... degrees (to +-170) from `normal`: the box must pass `box_ok`, the line
+    // (stopping short of the box) must cross no cut line and no text, and pass `line_ok`.
+    auto leader_to = [&](const Vec2& anchor, const Vec2& along, const Vec2& normal,
+                         std::initializer_list<double> radii, bool outside, auto box_ok,
+                         auto line_ok) {
       const double size = smallest;
-      for (double radius : {4.0, 6.0, 8.0, 11.0, 15.0, 20.0, 26.0}) {
+      for (double radius : radii) {
         for (int step = 0; step <= 34; ++step) {
-          // 0, +10, -10, +20, -20, ... degrees from the outward normal, to +-170.
           const double turn = (step % 2 == 1 ? 1 : -1) * ((step + 1) / 2) * 10.0 * kDegree;
-          const Vec2 ray = std::cos(turn) * outward + std::sin(turn) * along;
+          const Vec2 ray = std::cos(turn) * normal + std::sin(turn) * along;
           const Vec2 centre = anchor + radius * ray;
           const auto candidate = text_box(centre, along, size, label.text.size());
-          if (!fits_outside(candidate)) continue;
-          // The line from the anchor to where it meets the text box, stopping short of it.
+          if (!box_ok(candidate)) continue;
           const auto parts = segment_outside(anchor, centre, candidate);
           if (parts.empty()) continue;
           const Vec2 start = anchor + 0.2 * ray;
           const Vec2 end = parts.front()[1] - 0.3 * ray;
           if ((end - start).dot(ray) <= 0.1) continue;
-          const auto thin = leader_box({start, end});
-          bool free = true;
-          for (const auto& t : shapes.triangles)
-            free = free && !convex_overlap(thin.data(), 4, t.data(), 3, 0.01);
+          bool free = line_ok(start, end);
           for (const auto& line : lines)
             free = free && !segments_cross(start, end, line[0], line[1]);
           for (const auto& other : taken) free = free && !segment_crosses(start, end, other);
-          for (const auto& flap : flaps)
-            free = free && !point_in_polygon(start, flap) && !point_in_polygon(end, flap);
           if (!free) continue;
           label.position = centre;
           label.direction = along;
           label.size = size;
-          label.outside = true;
+          label.outside = outside;
           label.leader = {anchor, end};
           taken.push_back(candidate);
           taken.push_back(leader_box(label.leader));
@@ -453,6 +448,19 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         }
       }
       return false;
+    };
+    // Off the piece: the line touches no triangle of the piece and ends outside every tab.
+    auto leader_outside = [&](const Vec2& anchor, const Vec2& along, const Vec2& outward) {
+      return leader_to(anchor, along, outward, {4.0, 6.0, 8.0, 11.0, 15.0, 20.0, 26.0}, true,
+                       fits_outside, [&](const Vec2& start, const Vec2& end) {
+                         const auto thin = leader_box({start, end});
+                         for (const auto& t : shapes.triangles)
+                           if (convex_overlap(thin.data(), 4, t.data(), 3, 0.01)) return false;
+                         for (const auto& flap : flaps)
+                           if (point_in_polygon(start, flap) || point_in_polygon(end, flap))
+                             return false;
+                         return true;
+                       });
     };
     // From the seam, its middle first: a seam in a narrow slit is reached from the slit's
     // mouth.
@@ -488,36 +496,9 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       if (placed) break;
       Vec2 along;
       const Vec2 anchor = point_at(fraction * total, &along);
-      const Vec2 inward(-along.y(), along.x());
-      const double size = smallest;
-      for (double radius : {5.0, 7.0, 9.0, 12.0, 15.0, 19.0, 24.0, 30.0}) {
-        for (int step = 0; step <= 34 && !placed; ++step) {
-          // 0, +10, -10, ... degrees from the inward normal, to +-170.
-          const double turn = (step % 2 == 1 ? 1 : -1) * ((step + 1) / 2) * 10.0 * kDegree;
-          const Vec2 ray = std::cos(turn) * inward + std::sin(turn) * along;
-          const Vec2 centre = anchor + radius * ray;
-          const auto candidate = text_box(centre, along, size, label.text.size());
-          if (!fits(candidate)) continue;
-          const auto parts = segment_outside(anchor, centre, candidate);
-          if (parts.empty()) continue;
-          const Vec2 start = anchor + 0.2 * ray;
-          const Vec2 end = parts.front()[1] - 0.3 * ray;
-          if ((end - start).dot(ray) <= 0.1) continue;
-          bool free = true;
-          for (const auto& line : lines)
-            free = free && !segments_cross(start, end, line[0], line[1]);
-          for (const auto& other : taken) free = free && !segment_crosses(start, end, other);
-          if (!free) continue;
-          label.position = centre;
-          label.direction = along;
-          label.size = size;
-          label.leader = {anchor, end};
-          taken.push_back(candidate);
-          taken.push_back(leader_box(label.leader));
-          placed = true;
-        }
-        if (placed) break;
-      }
+      placed = leader_to(anchor, along, Vec2(-along.y(), along.x()),
+                         {5.0, 7.0, 9.0, 12.0, 15.0, 19.0, 24.0, 30.0}, false, fits,
+                         [](const Vec2&, const Vec2&) { return true; });
     }
     if (!placed) {
       label.size = std::max(label.size, smallest);
