@@ -483,8 +483,9 @@ std::vector<int> strips_exceeding_page(const std::vector<FlatStrip>& strips,
 
 namespace {
 
-// A strip that fits the page but packs badly: longer than half the page's long side and thin
-// or bent (its area under 40% of its box, or the box over 3 times as long as wide).
+// A strip that packs badly: longer than half the page's long side and thin or bent (its area
+// under 40% of its box, or the box over 3 times as long as wide). One larger than the page
+// counts too: split only to fit the page, its parts stay as long and bent.
 bool long_and_thin(const StripData& data, const Prepared& p) {
   const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
   bool fits = false;
@@ -496,44 +497,58 @@ bool long_and_thin(const StripData& data, const Prepared& p) {
                                  data.points[tri[2]] - data.points[tri[0]]));
   }
   const double length = box.size.maxCoeff(), width = box.size.minCoeff();
-  return fits && length > 0.5 * std::max(w, h) &&
+  return length > 0.5 * std::max(w, h) &&
          (area < 0.4 * box.size.prod() || length > 3.0 * width);
 }
 
 struct LongStrips {
-  int found = 0;  // strips that fit the page but are long and thin
-  int split = 0;  // of those, split in parts of half a page
+  int found = 0;     // strips that fit the page but are long and thin
+  int oversize = 0;  // strips larger than the page, long and thin
+  int split = 0;     // of those split_long covers, split in parts of half a page
 };
 
-// The layout, with `split_long` also long and thin strips that fit the page split in parts
-// fitting half of it; *long_strips counts them.
+// Which long and thin strips a layout splits in parts of half a page.
+enum class SplitLong { None, Fitting, All };
+
+// The layout, long and thin strips split as `split_long` says; *long_strips counts them.
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                          bool split_long, LongStrips* long_strips);
+                          SplitLong split_long, LongStrips* long_strips);
 
 }  // namespace
 
 PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
-  LongStrips whole, parts;
-  PatternLayout layout = layout_with(strips, options, false, &whole);
+  LongStrips whole;
+  PatternLayout layout = layout_with(strips, options, SplitLong::None, &whole);
   // No long thin strip is found unless nesting with split_long_strips.
-  if (layout.pages.size() < 2 || whole.found == 0) return layout;
-  PatternLayout halves = layout_with(strips, options, true, &parts);
-  const int split = parts.split;
-  // Worth it where every page saved costs at most three more pieces to cut and glue.
-  const int saved = static_cast<int>(layout.pages.size()) - static_cast<int>(halves.pages.size());
-  if (split == 0 || saved <= 0 || split > 3 * saved) return layout;
-  halves.warnings.push_back(std::to_string(split) + " long thin " +
-                            (split == 1 ? "strip was" : "strips were") +
+  if (layout.pages.size() < 2 || whole.found + whole.oversize == 0) return layout;
+  // The strips that fit split, then also those larger than the page (split only to fit it
+  // their parts would stay long and bent): each kept where every page it saves against the
+  // best so far costs at most three more strips split.
+  PatternLayout best = std::move(layout);
+  const std::size_t unsplit_pages = best.pages.size();
+  int best_split = 0;
+  for (SplitLong mode : {SplitLong::Fitting, SplitLong::All}) {
+    if (mode == SplitLong::Fitting ? whole.found == 0 : whole.oversize == 0) continue;
+    LongStrips parts;
+    PatternLayout halves = layout_with(strips, options, mode, &parts);
+    const int saved = static_cast<int>(best.pages.size()) - static_cast<int>(halves.pages.size());
+    if (parts.split == 0 || saved <= 0 || parts.split - best_split > 3 * saved) continue;
+    best = std::move(halves);
+    best_split = parts.split;
+  }
+  if (best_split > 0)
+    best.warnings.push_back(std::to_string(best_split) + " long thin " +
+                            (best_split == 1 ? "strip was" : "strips were") +
                             " split in parts of half a page, which saves " +
-                            std::to_string(saved) + " of " +
-                            std::to_string(layout.pages.size()) + " pages");
-  return halves;
+                            std::to_string(unsplit_pages - best.pages.size()) + " of " +
+                            std::to_string(unsplit_pages) + " pages");
+  return best;
 }
 
 namespace {
 
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                          bool split_long, LongStrips* long_strips) {
+                          SplitLong split_long, LongStrips* long_strips) {
   *long_strips = LongStrips();
   Prepared p = prepare(strips, options);
   PatternLayout layout;
@@ -558,11 +573,12 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
     ++number;
     std::vector<std::vector<int>> sets;
     const bool fits = strip_fits(data, p);
-    const bool long_thin = fits && options.packing == PackingMethod::Nest &&
+    const bool long_thin = options.packing == PackingMethod::Nest &&
                            options.split_long_strips && long_and_thin(data, p);
-    long_strips->found += long_thin;
-    if (long_thin && split_long) {
-      const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
+    (fits ? long_strips->found : long_strips->oversize) += long_thin;
+    const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
+    if (long_thin && (split_long == SplitLong::All ||
+                      (split_long == SplitLong::Fitting && fits))) {
       // Half the page: its long side halved.
       sets = h >= w ? split_to_fit(data, w, 0.5 * h, used_labels)
                     : split_to_fit(data, 0.5 * w, h, used_labels);
@@ -570,8 +586,9 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
     } else if (fits) {
       sets.push_back(data.triangles);
     } else {
-      const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
       sets = split_to_fit(data, w, h, used_labels);
+    }
+    if (!fits) {
       bool unused = false;
       const OrientedBox box =
           tightest_box(convex_hull(piece_points(data, data.triangles)), w, h, &unused);

@@ -626,6 +626,26 @@ TEST(LayoutPages, LongThinStripsAreSplitWhereThatSavesPages) {
             << split.pages.size() << " split\n";
 }
 
+// Arcs larger than the page: split only to fit it, each part is still a wide bend that packs
+// alone; in parts of half a page they pack together.
+TEST(LayoutPages, LongThinStripsLargerThanThePageAreSplitInHalfPagesWhereThatSavesPages) {
+  std::vector<FlatStrip> strips;
+  for (int k = 0; k < 4; ++k) strips.push_back(arc_strip(k, 150, 160, 270 * M_PI / 180, 90));
+  LayoutOptions options;
+  options.scale = 1;
+  options.split_long_strips = false;
+  const PatternLayout page_parts = layout_pages(strips, options);
+  expect_valid_layout(page_parts, strips, options);
+  options.split_long_strips = true;
+  const PatternLayout half_parts = layout_pages(strips, options);
+  expect_valid_layout(half_parts, strips, options);
+  EXPECT_LT(half_parts.pages.size(), page_parts.pages.size());
+  for (int k = 0; k < 4; ++k)
+    EXPECT_GT(pieces_of(half_parts, k).size(), pieces_of(page_parts, k).size()) << "strip " << k;
+  std::cout << "[ pages    ] arcs larger than the page: " << page_parts.pages.size()
+            << " pages split for the page, " << half_parts.pages.size() << " in half pages\n";
+}
+
 // A U-shaped piece whose slot walls are glued to each other: the tab shrinks to fit in a
 // 2.4 mm slot and is dropped (with a warning) in a 0.8 mm one.
 TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
