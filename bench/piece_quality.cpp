@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf(
-      "| model | pieces | narrow | small | smallest mm^2 | seam edges | no partner | "
+      "| model | pieces | narrow | small | small alone | seam edges | no partner | "
       "length differs | other label | labels | not two chains | sides differ | "
       "notes unmatched |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
     const long row[12] = {pieces.pieces,
                           pieces.narrow,
                           pieces.small,
-                          0,
+                          pieces.small_alone,
                           seams.seam_edges,
                           seams.edges_without_one_partner,
                           seams.edges_of_other_length,
@@ -101,15 +101,15 @@ int main(int argc, char** argv) {
                           unmatched_notes};
     for (int k = 0; k < 12; ++k) total[k] += row[k];
     std::printf(
-        "| %s | %ld | %ld | %ld | %.0f | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+        "| %s | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
         dir.filename().empty() ? dir.parent_path().filename().c_str() : dir.filename().c_str(),
-        row[0], row[1], row[2], pieces.smallest_mm2, row[4], row[5], row[6], row[7], row[8], row[9],
+        row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9],
         row[10], row[11]);
     for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }
-  std::printf("| **total** | %ld | %ld | %ld | | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
-              total[0], total[1], total[2], total[4], total[5], total[6], total[7], total[8],
+  std::printf("| **total** | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+              total[0], total[1], total[2], total[3], total[4], total[5], total[6], total[7], total[8],
               total[9], total[10], total[11]);
   return 0;
 }

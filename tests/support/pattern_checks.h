@@ -189,6 +189,10 @@ struct PieceFindings {
   int pieces = 0;
   int narrow = 0;  // more than `narrow_share` of the area narrower than `narrow_mm`
   int small = 0;   // less than `small_mm2`
+  /// Of the small ones, those whose whole piece of the model (the strips joined to them by
+  /// seams, transitively) is under `small_mm2` too: a separate part of the input that small,
+  /// with no neighbour to join.
+  int small_alone = 0;
   double smallest_mm2 = 0.0;
   double most_narrow_share = 0.0;
   std::vector<std::string> problems;
@@ -200,7 +204,24 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
                                   double small_mm2 = 100.0) {
   PieceFindings findings;
   findings.smallest_mm2 = 1e300;
-  for (const auto& strip : strips) {
+  // Strips joined by seams: union-find over indices.
+  std::map<long, std::size_t> index_of;
+  for (std::size_t i = 0; i < strips.size(); ++i) index_of[strips[i].at("id").get<long>()] = i;
+  std::vector<std::size_t> parent(strips.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+  auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < strips.size(); ++i)
+    for (const auto& edge : strips[i].at("boundary")) {
+      const long neighbour = edge.value("neighbour", -1L);
+      auto it = index_of.find(neighbour);
+      if (it != index_of.end()) parent[root(i)] = root(it->second);
+    }
+  std::vector<double> areas(strips.size(), 0.0);
+  for (std::size_t s = 0; s < strips.size(); ++s) {
+    const auto& strip = strips[s];
     std::vector<Vec2> points;
     for (const auto& p : strip.at("vertices2d"))
       points.emplace_back(p.at(0).get<double>() * mm_per_unit, p.at(1).get<double>() * mm_per_unit);
@@ -213,6 +234,7 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
       area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
     }
     ++findings.pieces;
+    areas[s] = area;
     findings.smallest_mm2 = std::min(findings.smallest_mm2, area);
     const double share = narrow_area_fraction(points, triangles, narrow_mm);
     findings.most_narrow_share = std::max(findings.most_narrow_share, share);
@@ -229,6 +251,10 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
         findings.problems.push_back("strip " + id + ": " + std::to_string(area) + " mm^2");
     }
   }
+  std::map<std::size_t, double> component_area;
+  for (std::size_t s = 0; s < strips.size(); ++s) component_area[root(s)] += areas[s];
+  for (std::size_t s = 0; s < strips.size(); ++s)
+    findings.small_alone += areas[s] < small_mm2 && component_area[root(s)] < small_mm2;
   if (findings.pieces == 0) findings.smallest_mm2 = 0.0;
   return findings;
 }
