@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -331,6 +332,124 @@ double flat_area(const FlatStrip& strip) {
   return area;
 }
 
+// Single-edge hinges of the pairs `wanted` picks, the longest first:
+// (pair index, edge) over shared_boundaries(strips).
+struct Hinge {
+  int pair;
+  Chain edge;
+};
+
+std::vector<Hinge> hinges_of(const std::vector<PairCandidate>& pairs,
+                             const std::vector<FlatStrip>& strips,
+                             const std::function<bool(const PairCandidate&)>& wanted) {
+  std::vector<Hinge> hinges;
+  for (int p = 0; p < static_cast<int>(pairs.size()); ++p) {
+    if (!wanted(pairs[p])) continue;
+    const FlatStrip& x = strips[pairs[p].x];
+    for (const Chain& chain : pairs[p].chains)
+      for (std::size_t i = 0; i + 1 < chain.x.size(); ++i) {
+        Chain edge;
+        edge.x = {chain.x[i], chain.x[i + 1]};
+        edge.y = {chain.y[i], chain.y[i + 1]};
+        edge.length = (x.vertices3d[chain.x[i + 1]] - x.vertices3d[chain.x[i]]).norm();
+        hinges.push_back({p, std::move(edge)});
+      }
+  }
+  std::stable_sort(hinges.begin(), hinges.end(),
+                   [](const Hinge& a, const Hinge& b) { return a.edge.length > b.edge.length; });
+  return hinges;
+}
+
+// A strip no neighbour takes whole, taken apart into its triangles, each hinged to a
+// neighbour across one of its edges (a triangle whose neighbours are all its own siblings
+// waits until a sibling has been taken): where the union of the whole would overlap a
+// neighbour (a notch narrower in the plane than on the surface, at a saddle), single
+// triangles often still fold out on the free side. Kept only when every triangle finds a
+// place and at most one of the strip's inner edges is opened; otherwise `strips` is left as
+// it was and false returned.
+bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeOptions& options,
+                         int& next_id) {
+  constexpr std::size_t kMostTriangles = 64;
+  constexpr int kMostOpened = 1;
+  const FlatStrip& crumb = strips[small];
+  if (crumb.triangles.size() < 2 || crumb.triangles.size() > kMostTriangles) return false;
+  std::vector<FlatStrip> trial;
+  trial.reserve(strips.size() + crumb.triangles.size());
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+    if (s != small) trial.push_back(strips[s]);
+  std::set<int> pieces;  // ids of the crumb's triangles not yet taken
+  int id = next_id;
+  for (const Triangle& t : crumb.triangles) {
+    FlatStrip one;
+    one.id = id++;
+    one.source_strip = crumb.source_strip;
+    for (int k = 0; k < 3; ++k) {
+      one.vertices2d.push_back(crumb.vertices2d[t[k]]);
+      one.vertices3d.push_back(crumb.vertices3d[t[k]]);
+      if (crumb.uvs.size() == crumb.vertices2d.size()) one.uvs.push_back(crumb.uvs[t[k]]);
+    }
+    one.triangles = {{0, 1, 2}};
+    one.boundary = flat_boundary(one.triangles);
+    pieces.insert(one.id);
+    trial.push_back(std::move(one));
+  }
+  std::set<int> touched;  // ids of the strips that took a triangle
+  while (!pieces.empty()) {
+    const std::vector<PairCandidate> pairs = shared_boundaries(trial);
+    // A triangle of the crumb to a strip that is not one: X or Y, whichever is the strip.
+    const auto hinges = hinges_of(pairs, trial, [&](const PairCandidate& pair) {
+      return pieces.count(trial[pair.x].id) != pieces.count(trial[pair.y].id);
+    });
+    bool taken = false;
+    for (const Hinge& hinge : hinges) {
+      const PairCandidate& pair = pairs[hinge.pair];
+      FlatStrip merged;
+      if (!try_merge(trial[pair.x], trial[pair.y], {hinge.edge}, options, merged)) continue;
+      // The strip keeps its id whichever index it had: the piece is the crumb's.
+      const bool x_is_piece = pieces.count(trial[pair.x].id) > 0;
+      const FlatStrip& kept = x_is_piece ? trial[pair.y] : trial[pair.x];
+      pieces.erase(x_is_piece ? trial[pair.x].id : trial[pair.y].id);
+      merged.id = kept.id;
+      merged.source_strip = kept.source_strip;
+      touched.insert(kept.id);
+      trial[pair.x] = std::move(merged);
+      trial.erase(trial.begin() + pair.y);
+      taken = true;
+      break;
+    }
+    if (!taken) return false;
+  }
+  // Each edge between two of the crumb's triangles that the plane no longer joins is one more
+  // seam to glue (often a tiny one in a notch, with no room for a tab): at most one.
+  std::map<std::array<double, 6>, int> inner;  // the crumb's inner edges
+  for (const Triangle& t : crumb.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++inner[exact_key(crumb.vertices3d[t[k]], crumb.vertices3d[t[(k + 1) % 3]])];
+  int opened = 0;
+  for (const auto& [key, count] : inner) opened += count > 1;
+  for (const FlatStrip& strip : trial) {
+    if (!touched.count(strip.id)) continue;
+    std::map<std::pair<int, int>, int> uses;
+    for (const Triangle& t : strip.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        ++uses[{std::min(a, b), std::max(a, b)}];
+      }
+    for (const auto& [edge, count] : uses) {
+      if (count < 2) continue;
+      auto it = inner.find(exact_key(strip.vertices3d[edge.first], strip.vertices3d[edge.second]));
+      if (it != inner.end() && it->second > 1) {
+        it->second = 0;  // still joined in the plane
+        --opened;
+      }
+    }
+  }
+  if (opened > kMostOpened) return false;
+  next_id = id;
+  strips = std::move(trial);
+  return true;
+}
+
 }  // namespace
 
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
@@ -340,6 +459,8 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
   if (!(min_area > 0.0)) return strips;
   for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
   std::set<int> given_up;  // ids of small strips no neighbour takes
+  int next_id = 0;  // ids for the single triangles of a strip taken apart
+  for (const FlatStrip& strip : strips) next_id = std::max(next_id, strip.id + 1);
   while (true) {
     // The smallest strip still to place.
     int small = -1;
@@ -350,26 +471,10 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     }
     if (small < 0) break;
     // Its shared boundaries, as single edges, the longest first: the hinge it folds over.
-    struct Hinge {
-      int pair;
-      Chain edge;
-    };
-    std::vector<PairCandidate> pairs = shared_boundaries(strips);
-    std::vector<Hinge> hinges;
-    for (int p = 0; p < static_cast<int>(pairs.size()); ++p) {
-      if (pairs[p].x != small && pairs[p].y != small) continue;
-      const FlatStrip& x = strips[pairs[p].x];
-      for (const Chain& chain : pairs[p].chains)
-        for (std::size_t i = 0; i + 1 < chain.x.size(); ++i) {
-          Chain edge;
-          edge.x = {chain.x[i], chain.x[i + 1]};
-          edge.y = {chain.y[i], chain.y[i + 1]};
-          edge.length = (x.vertices3d[chain.x[i + 1]] - x.vertices3d[chain.x[i]]).norm();
-          hinges.push_back({p, std::move(edge)});
-        }
-    }
-    std::stable_sort(hinges.begin(), hinges.end(),
-                     [](const Hinge& a, const Hinge& b) { return a.edge.length > b.edge.length; });
+    const std::vector<PairCandidate> pairs = shared_boundaries(strips);
+    const auto hinges = hinges_of(pairs, strips, [&](const PairCandidate& pair) {
+      return pair.x == small || pair.y == small;
+    });
     bool joined = false;
     for (const Hinge& hinge : hinges) {
       const PairCandidate& pair = pairs[hinge.pair];
@@ -380,6 +485,7 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
       joined = true;
       break;
     }
+    if (!joined) joined = absorb_by_triangles(strips, small, options, next_id);
     if (!joined) given_up.insert(strips[small].id);
   }
   if (left) left->assign(given_up.begin(), given_up.end());

@@ -51,8 +51,15 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// (the longest shared edge first; lengths agree, the strips being isometric), kept where the
 /// union overlaps nowhere. The joined piece folds over that edge (a hinge); its other shared
 /// edges become seams of the union with itself, glued as any seam. Merged strips keep the
-/// lower index's id and frame, as in merge_congruent. The ids of small strips no neighbour
-/// takes go to `left` (when given); then label_seams runs on the result.
+/// lower index's id and frame, as in merge_congruent. A small strip that no neighbour takes
+/// whole (every hinge lays it over the neighbour: at a saddle the gap in the plane is
+/// narrower than the strip) is taken apart into its triangles (at most 64), each folded out
+/// of a neighbour over one of its edges, longest first; a triangle next to its siblings only
+/// waits for one of them to be taken. That is kept only when every triangle finds a place and
+/// at most one edge between two of its triangles is opened (each one a new seam to glue,
+/// often tiny and in a notch without room for a tab).
+/// The ids of small strips left go to `left` (when given); then label_seams runs on the
+/// result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options = {},

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "core/errors.h"
@@ -183,6 +184,88 @@ TEST(MergeCongruent, UvsAreKeptWhenBothStripsHaveThem) {
   ASSERT_EQ(s.uvs.size(), s.vertices3d.size());
   for (std::size_t v = 0; v < s.uvs.size(); ++v)
     EXPECT_EQ(s.uvs[v], Vec2(s.vertices3d[v].x() + s.vertices3d[v].z(), s.vertices3d[v].y()));
+}
+
+// A crumb of two triangles no hinge takes whole: folded out over the edge a-b its second
+// triangle lands on the neighbour X, folded out over d-c its first lands on a triangle of X
+// placed there. One triangle at a time, each finds a free side, and the crumb is gone.
+// (X's plane image need not be isometric to its "3D" points here: the join reads only the
+// shared edges' plane lengths and the 3D points' identities.)
+TEST(JoinSmallStrips, CrumbNoHingeTakesWholeIsTakenOneTriangleAtATime) {
+  const Vec3 a(1, 0, 0), b(3, 0, 0), c(2, 2, 0), d(4, -1, 0);
+  FlatStrip crumb;
+  crumb.id = 1;
+  crumb.source_strip = 1;
+  crumb.vertices3d = {a, b, c, d};
+  for (const Vec3& p : crumb.vertices3d) crumb.vertices2d.emplace_back(p.x(), p.y());
+  crumb.triangles = {{0, 1, 2}, {1, 3, 2}};
+
+  // X: the rectangle [0, 10] x [-3, 0] with a-b and d-c on its top edge, plus a blocker.
+  const double dc = (d - c).norm();
+  FlatStrip x;
+  x.id = 0;
+  x.source_strip = 0;
+  const std::vector<Vec2> top{{0, 0}, {1, 0}, {3, 0}, {4.5, 0}, {9 - dc, 0}, {9, 0}, {10, 0}};
+  const std::vector<Vec3> top3d{{0, 0, 5}, a, b, {4.5, 0, 5}, d, c, {10, 0, 5}};
+  x.vertices2d = top;
+  x.vertices3d = top3d;
+  x.vertices2d.push_back({0, -3});  // 7
+  x.vertices3d.push_back({0, -3, 5});
+  x.vertices2d.push_back({10, -3});  // 8
+  x.vertices3d.push_back({10, -3, 5});
+  for (int i = 0; i + 1 < 7; ++i) x.triangles.push_back({7, i + 1, i});
+  x.triangles.push_back({7, 8, 6});
+  // Where the crumb's first triangle lands when the crumb is folded out over d-c.
+  const Vec2 d2 = x.vertices2d[4], c2 = x.vertices2d[5];
+  const Vec2 dy(d.x(), d.y()), cy(c.x(), c.y());
+  const double turn = std::atan2((c2 - d2).y(), (c2 - d2).x()) - std::atan2((cy - dy).y(), (cy - dy).x());
+  auto landed = [&](const Vec3& p) {
+    const Vec2 q = Vec2(p.x(), p.y()) - dy;
+    return Vec2(Vec2(std::cos(turn) * q.x() - std::sin(turn) * q.y(),
+                     std::sin(turn) * q.x() + std::cos(turn) * q.y()) + d2);
+  };
+  const Vec2 centre = (landed(a) + landed(b) + landed(c)) / 3.0;
+  for (const Vec3& p : {a, b, c}) {
+    x.vertices2d.push_back(centre + 0.5 * (landed(p) - centre));
+    x.vertices3d.push_back(Vec3(x.vertices2d.back().x(), x.vertices2d.back().y(), 7.0));
+  }
+  x.triangles.push_back({9, 10, 11});
+
+  std::vector<int> left;
+  const auto joined = join_small_strips({x, crumb}, 5.0, {}, &left);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_TRUE(left.empty());
+  EXPECT_EQ(joined[0].id, 0);
+  EXPECT_EQ(joined[0].triangles.size(), x.triangles.size() + 2);
+  EXPECT_EQ(count_overlapping_pairs(joined[0]), 0);
+  // Both crumb triangles keep their shape in the plane.
+  for (std::size_t t = x.triangles.size(); t < joined[0].triangles.size(); ++t) {
+    const Triangle& tri = joined[0].triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const int u = tri[k], v = tri[(k + 1) % 3];
+      EXPECT_NEAR((joined[0].vertices2d[u] - joined[0].vertices2d[v]).norm(),
+                  (joined[0].vertices3d[u] - joined[0].vertices3d[v]).norm(), 1e-9);
+    }
+  }
+}
+
+// Without the neighbour's room on either side the crumb stays whole and is named.
+TEST(JoinSmallStrips, CrumbWithNoFreeSideStaysAndIsNamed) {
+  FlatStrip crumb;
+  crumb.id = 1;
+  crumb.vertices3d = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  crumb.vertices2d = {{0, 0}, {1, 0}, {0, 1}};
+  crumb.triangles = {{0, 1, 2}};
+  // X holds the crumb's edge 0-1 (reversed) with its image under a triangle of X.
+  FlatStrip x;
+  x.id = 0;
+  x.vertices3d = {{1, 0, 0}, {0, 0, 0}, {0.5, -10, 3}, {0.2, 0.2, 4}, {0.6, 0.2, 4}, {0.2, 0.6, 4}};
+  x.vertices2d = {{1, 0}, {0, 0}, {0.5, -10}, {0.2, 0.2}, {0.6, 0.2}, {0.2, 0.6}};
+  x.triangles = {{0, 1, 2}, {3, 4, 5}};
+  std::vector<int> left;
+  const auto joined = join_small_strips({x, crumb}, 1.0, {}, &left);
+  EXPECT_EQ(joined.size(), 2u);
+  EXPECT_EQ(left, std::vector<int>{1});
 }
 
 TEST(MergeCongruent, BadInputThrows) {
