@@ -373,10 +373,24 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
   constexpr int kMostOpened = 1;
   const FlatStrip& crumb = strips[small];
   if (crumb.triangles.size() < 2 || crumb.triangles.size() > kMostTriangles) return false;
+  // Only the crumb's neighbours (a boundary edge on its rim) can take its triangles: they
+  // and the triangles are worked on apart from the other strips, then put back.
+  std::set<std::array<double, 6>> rim;
+  for (const BoundaryEdge& e : crumb.boundary)
+    rim.insert(exact_key(crumb.vertices3d[e.v0], crumb.vertices3d[e.v1]));
+  std::vector<int> around;  // indices into strips, in order
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+    if (s == small) continue;
+    for (const BoundaryEdge& e : strips[s].boundary)
+      if (rim.count(exact_key(strips[s].vertices3d[e.v0], strips[s].vertices3d[e.v1]))) {
+        around.push_back(s);
+        break;
+      }
+  }
+  if (around.empty()) return false;
   std::vector<FlatStrip> trial;
-  trial.reserve(strips.size() + crumb.triangles.size());
-  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
-    if (s != small) trial.push_back(strips[s]);
+  trial.reserve(around.size() + crumb.triangles.size());
+  for (int s : around) trial.push_back(strips[s]);
   std::set<int> pieces;  // ids of the crumb's triangles not yet taken
   int id = next_id;
   for (const Triangle& t : crumb.triangles) {
@@ -446,7 +460,9 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
   }
   if (opened > kMostOpened) return false;
   next_id = id;
-  strips = std::move(trial);
+  // Every triangle went into a neighbour, which kept its place in `trial`.
+  for (std::size_t i = 0; i < around.size(); ++i) strips[around[i]] = std::move(trial[i]);
+  strips.erase(strips.begin() + small);
   return true;
 }
 
