@@ -367,8 +367,7 @@ std::vector<Hinge> hinges_of(const std::vector<PairCandidate>& pairs,
 // triangles often still fold out on the free side. Kept only when every triangle finds a
 // place and at most one of the strip's inner edges is opened; otherwise `strips` is left as
 // it was and false returned.
-bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeOptions& options,
-                         int& next_id) {
+bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeOptions& options) {
   constexpr std::size_t kMostTriangles = 64;
   constexpr int kMostOpened = 1;
   const FlatStrip& crumb = strips[small];
@@ -388,14 +387,16 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
       }
   }
   if (around.empty()) return false;
+  // trial: the neighbours at 0..n-1, then the triangles not yet taken. A triangle taken is
+  // welded into the neighbour (the lower index keeps its place and id) and erased, so the
+  // neighbours never move and the rest of `trial` is always the triangles left.
+  const int n = static_cast<int>(around.size());
   std::vector<FlatStrip> trial;
   trial.reserve(around.size() + crumb.triangles.size());
   for (int s : around) trial.push_back(strips[s]);
-  std::set<int> pieces;  // ids of the crumb's triangles not yet taken
-  int id = next_id;
   for (const Triangle& t : crumb.triangles) {
     FlatStrip one;
-    one.id = id++;
+    one.id = crumb.id;
     one.source_strip = crumb.source_strip;
     for (int k = 0; k < 3; ++k) {
       one.vertices2d.push_back(crumb.vertices2d[t[k]]);
@@ -404,28 +405,20 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
     }
     one.triangles = {{0, 1, 2}};
     one.boundary = flat_boundary(one.triangles);
-    pieces.insert(one.id);
     trial.push_back(std::move(one));
   }
-  std::set<int> touched;  // ids of the strips that took a triangle
-  while (!pieces.empty()) {
+  std::vector<bool> touched(around.size(), false);  // neighbours that took a triangle
+  while (static_cast<int>(trial.size()) > n) {
     const std::vector<PairCandidate> pairs = shared_boundaries(trial);
-    // A triangle of the crumb to a strip that is not one: X or Y, whichever is the strip.
-    const auto hinges = hinges_of(pairs, trial, [&](const PairCandidate& pair) {
-      return pieces.count(trial[pair.x].id) != pieces.count(trial[pair.y].id);
-    });
+    // A neighbour (x, the lower index) and a triangle (y).
+    const auto hinges = hinges_of(
+        pairs, trial, [&](const PairCandidate& pair) { return pair.x < n && pair.y >= n; });
     bool taken = false;
     for (const Hinge& hinge : hinges) {
       const PairCandidate& pair = pairs[hinge.pair];
       FlatStrip merged;
       if (!try_merge(trial[pair.x], trial[pair.y], {hinge.edge}, options, merged)) continue;
-      // The strip keeps its id whichever index it had: the piece is the crumb's.
-      const bool x_is_piece = pieces.count(trial[pair.x].id) > 0;
-      const FlatStrip& kept = x_is_piece ? trial[pair.y] : trial[pair.x];
-      pieces.erase(x_is_piece ? trial[pair.x].id : trial[pair.y].id);
-      merged.id = kept.id;
-      merged.source_strip = kept.source_strip;
-      touched.insert(kept.id);
+      touched[pair.x] = true;
       trial[pair.x] = std::move(merged);
       trial.erase(trial.begin() + pair.y);
       taken = true;
@@ -441,8 +434,9 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
       ++inner[exact_key(crumb.vertices3d[t[k]], crumb.vertices3d[t[(k + 1) % 3]])];
   int opened = 0;
   for (const auto& [key, count] : inner) opened += count > 1;
-  for (const FlatStrip& strip : trial) {
-    if (!touched.count(strip.id)) continue;
+  for (int i = 0; i < n; ++i) {
+    if (!touched[i]) continue;
+    const FlatStrip& strip = trial[i];
     std::map<std::pair<int, int>, int> uses;
     for (const Triangle& t : strip.triangles)
       for (int k = 0; k < 3; ++k) {
@@ -459,9 +453,7 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
     }
   }
   if (opened > kMostOpened) return false;
-  next_id = id;
-  // Every triangle went into a neighbour, which kept its place in `trial`.
-  for (std::size_t i = 0; i < around.size(); ++i) strips[around[i]] = std::move(trial[i]);
+  for (int i = 0; i < n; ++i) strips[around[i]] = std::move(trial[i]);
   strips.erase(strips.begin() + small);
   return true;
 }
@@ -475,8 +467,6 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
   if (!(min_area > 0.0)) return strips;
   for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
   std::set<int> given_up;  // ids of small strips no neighbour takes
-  int next_id = 0;  // ids for the single triangles of a strip taken apart
-  for (const FlatStrip& strip : strips) next_id = std::max(next_id, strip.id + 1);
   while (true) {
     // The smallest strip still to place.
     int small = -1;
@@ -501,7 +491,7 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
       joined = true;
       break;
     }
-    if (!joined) joined = absorb_by_triangles(strips, small, options, next_id);
+    if (!joined) joined = absorb_by_triangles(strips, small, options);
     if (!joined) given_up.insert(strips[small].id);
   }
   if (left) left->assign(given_up.begin(), given_up.end());

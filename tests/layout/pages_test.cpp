@@ -601,18 +601,26 @@ TEST(LayoutPages, CurvedStripIsSplitIntoPiecesThatFit) {
 // Long thin arcs (C shapes) that fit the page one at a time: laid out again with each split
 // in halves that fit half a page, they need fewer pages, and the layout keeps that (every
 // split strip printed as Na and Nb, a note saying so); with split_long_strips off it does not.
-TEST(LayoutPages, LongThinStripsAreSplitWhereThatSavesPages) {
-  std::vector<FlatStrip> strips;  // four C shapes 180 mm across: one per page
-  for (int k = 0; k < 4; ++k) strips.push_back(arc_strip(k, 80, 90, 270 * M_PI / 180, 60));
+// Four arcs of 270 degrees between radii r and r + 10 mm, at 1:1, laid out without and with
+// split_long_strips (each layout checked valid).
+std::pair<PatternLayout, PatternLayout> arcs_without_and_with_split(double r, int segments,
+                                                                    std::vector<FlatStrip>& strips) {
+  for (int k = 0; k < 4; ++k) strips.push_back(arc_strip(k, r, r + 10, 270 * M_PI / 180, segments));
   LayoutOptions options;
   options.scale = 1;
   options.split_long_strips = false;
-  const PatternLayout whole = layout_pages(strips, options);
-  expect_valid_layout(whole, strips, options);
-  for (int k = 0; k < 4; ++k) EXPECT_EQ(pieces_of(whole, k).size(), 1u);
+  PatternLayout without = layout_pages(strips, options);
+  expect_valid_layout(without, strips, options);
   options.split_long_strips = true;
-  const PatternLayout split = layout_pages(strips, options);
-  expect_valid_layout(split, strips, options);
+  PatternLayout with = layout_pages(strips, options);
+  expect_valid_layout(with, strips, options);
+  return {std::move(without), std::move(with)};
+}
+
+TEST(LayoutPages, LongThinStripsAreSplitWhereThatSavesPages) {
+  std::vector<FlatStrip> strips;  // four C shapes 180 mm across: one per page
+  const auto [whole, split] = arcs_without_and_with_split(80, 60, strips);
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(pieces_of(whole, k).size(), 1u);
   EXPECT_LT(split.pages.size(), whole.pages.size());
   for (int k = 0; k < 4; ++k) {
     const auto pieces = pieces_of(split, k);
@@ -629,16 +637,8 @@ TEST(LayoutPages, LongThinStripsAreSplitWhereThatSavesPages) {
 // Arcs larger than the page: split only to fit it, each part is still a wide bend that packs
 // alone; in parts of half a page they pack together.
 TEST(LayoutPages, LongThinStripsLargerThanThePageAreSplitInHalfPagesWhereThatSavesPages) {
-  std::vector<FlatStrip> strips;
-  for (int k = 0; k < 4; ++k) strips.push_back(arc_strip(k, 150, 160, 270 * M_PI / 180, 90));
-  LayoutOptions options;
-  options.scale = 1;
-  options.split_long_strips = false;
-  const PatternLayout page_parts = layout_pages(strips, options);
-  expect_valid_layout(page_parts, strips, options);
-  options.split_long_strips = true;
-  const PatternLayout half_parts = layout_pages(strips, options);
-  expect_valid_layout(half_parts, strips, options);
+  std::vector<FlatStrip> strips;  // four C shapes 320 mm across
+  const auto [page_parts, half_parts] = arcs_without_and_with_split(150, 90, strips);
   EXPECT_LT(half_parts.pages.size(), page_parts.pages.size());
   for (int k = 0; k < 4; ++k)
     EXPECT_GT(pieces_of(half_parts, k).size(), pieces_of(page_parts, k).size()) << "strip " << k;

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/piece_width.h"
+#include "core/union_find.h"
 
 namespace papercraft::testing {
 
@@ -204,20 +205,14 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
                                   double small_mm2 = 100.0) {
   PieceFindings findings;
   findings.smallest_mm2 = 1e300;
-  // Strips joined by seams: union-find over indices.
+  // Strips joined by seams, by index.
   std::map<long, std::size_t> index_of;
   for (std::size_t i = 0; i < strips.size(); ++i) index_of[strips[i].at("id").get<long>()] = i;
-  std::vector<std::size_t> parent(strips.size());
-  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-  auto root = [&](std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
+  UnionFind joined(strips.size());
   for (std::size_t i = 0; i < strips.size(); ++i)
     for (const auto& edge : strips[i].at("boundary")) {
-      const long neighbour = edge.value("neighbour", -1L);
-      auto it = index_of.find(neighbour);
-      if (it != index_of.end()) parent[root(i)] = root(it->second);
+      auto it = index_of.find(edge.value("neighbour", -1L));
+      if (it != index_of.end()) joined.unite(i, it->second);
     }
   std::vector<double> areas(strips.size(), 0.0);
   for (std::size_t s = 0; s < strips.size(); ++s) {
@@ -252,9 +247,9 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
     }
   }
   std::map<std::size_t, double> component_area;
-  for (std::size_t s = 0; s < strips.size(); ++s) component_area[root(s)] += areas[s];
+  for (std::size_t s = 0; s < strips.size(); ++s) component_area[joined.find(s)] += areas[s];
   for (std::size_t s = 0; s < strips.size(); ++s)
-    findings.small_alone += areas[s] < small_mm2 && component_area[root(s)] < small_mm2;
+    findings.small_alone += areas[s] < small_mm2 && component_area[joined.find(s)] < small_mm2;
   if (findings.pieces == 0) findings.smallest_mm2 = 0.0;
   return findings;
 }
