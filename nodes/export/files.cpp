@@ -49,6 +49,9 @@ std::string approximation_obj(const std::vector<const RuledStrip*>& strips) {
       out += '\n';
     }
     for (const Triangle& t : mesh.triangles) {
+      // Two corners at one point (a fan's apex on its own polyline): no surface, no face.
+      const auto& v = mesh.vertices;
+      if (v[t[0]] == v[t[1]] || v[t[1]] == v[t[2]] || v[t[2]] == v[t[0]]) continue;
       out += "f " + std::to_string(base + t[0]) + " " + std::to_string(base + t[1]) + " " +
              std::to_string(base + t[2]) + "\n";
     }

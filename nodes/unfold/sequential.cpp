@@ -12,9 +12,13 @@
 #include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/overlap_2d.h"
+#include "core/union_find.h"
 
 namespace papercraft {
 namespace {
+
+// Two copies of one 3D point lie together on paper when within this times the mean edge.
+constexpr double kRepeatedPointReach = 1e-6;
 
 struct FlatBuilder {
   FlatStrip flat;
@@ -221,6 +225,44 @@ void weld_flat_ruling(FlatStrip& flat, const Vec3& p, const Vec3& q, double reac
   flat = std::move(welded);
 }
 
+// A triangle with two corners at one 3D point (a fan whose apex lies on its own polyline, as
+// when a flat disc is fanned from a corner; two polylines sharing an end) has no area. Its two
+// copies of the point become one and the triangle goes: left in, it would print as a piece of
+// no area (a cut line with a tab on each side) wherever the layout splits the strip, and as a
+// zero-length cut edge. Copies are joined only where they also lie together on paper (within
+// `reach`) and share their texture coordinates.
+void weld_repeated_points(FlatStrip& flat, double reach) {
+  UnionFind same(flat.vertices3d.size());
+  bool any = false;
+  for (const Triangle& t : flat.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int a = t[i], b = t[(i + 1) % 3];
+      if (a == b || flat.vertices3d[a] != flat.vertices3d[b]) continue;
+      if ((flat.vertices2d[a] - flat.vertices2d[b]).norm() > reach) continue;
+      if (!flat.uvs.empty() && flat.uvs[a] != flat.uvs[b]) continue;
+      same.unite(static_cast<std::size_t>(a), static_cast<std::size_t>(b));
+      any = true;
+    }
+  if (!any) return;
+  std::vector<int> index(flat.vertices3d.size(), -1);
+  FlatStrip welded;
+  welded.id = flat.id;
+  welded.source_strip = flat.source_strip;
+  for (std::size_t v = 0; v < index.size(); ++v) {
+    if (same.find(v) != v) continue;
+    index[v] = static_cast<int>(welded.vertices3d.size());
+    welded.vertices3d.push_back(flat.vertices3d[v]);
+    welded.vertices2d.push_back(flat.vertices2d[v]);
+    if (!flat.uvs.empty()) welded.uvs.push_back(flat.uvs[v]);
+  }
+  for (Triangle t : flat.triangles) {
+    for (int& v : t) v = index[same.find(static_cast<std::size_t>(v))];
+    if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) welded.triangles.push_back(t);
+  }
+  if (welded.triangles.empty()) return;  // nothing but such triangles: left as it is
+  flat = std::move(welded);
+}
+
 }  // namespace
 
 std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id, int first_flat_id,
@@ -408,6 +450,7 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
     FlatStrip& flat = builders[k].flat;
     flat.id = first_flat_id + static_cast<int>(k);
     flat.source_strip = source_strip_id;
+    weld_repeated_points(flat, kRepeatedPointReach * mean_edge);
     flat.boundary = flat_boundary(flat.triangles);
     result.push_back(std::move(flat));
   }

@@ -47,7 +47,9 @@ struct UnfoldOptions {
 /// triangle with at most one neighbour, so a ruled strip is laid out in order along its
 /// rulings; any mesh is accepted, a remaining dual cycle being cut where the traversal
 /// closes it. Zero-area triangles are placed on a line; one across a zero-length edge is
-/// hinged straight on from its parent. A triangle repeating a vertex index is skipped.
+/// hinged straight on from its parent. A triangle repeating a vertex index is skipped; one
+/// with two corners at the same 3D point (bit for bit; an apex on its own polyline) is dropped
+/// from the result, and those corners welded into one vertex where they coincide on paper.
 ///
 /// \pre a_count + b_count == #vertices (or both 0 for a general mesh, which is never
 ///      opened along a ruling); indices in range; uvs empty or one per vertex; finite

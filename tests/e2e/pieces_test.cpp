@@ -155,6 +155,42 @@ TEST(Pieces, LimitsOffKeepTheRefinementFree) {
   expect_exact_seams(out);
 }
 
+// A cube of 12 triangles at 200 mm: each flat face is fanned from one of its own corners, and
+// that fan's two triangles with two corners at the apex have no area. They used to stay in the
+// strip, so the layout (which splits the 800 x 600 mm unfolding at inner edges to fit A4)
+// printed 23 pieces, 11 of them nothing but a cut line with a tab on each side. Now every flat
+// triangle has area, no boundary edge has zero length, and at most one piece per triangle.
+TEST(Pieces, NoPieceWithoutAreaOnACube) {
+  BoxOptions options;
+  options.divisions_x = options.divisions_y = options.divisions_z = 1;
+  const TriangleMesh mesh = box(options);
+  ASSERT_EQ(mesh.triangles.size(), 12u);
+  const auto out = run_pipeline(mesh, "2%", "cube12");
+  expect_certified(mesh, out);
+  expect_exact_seams(out);
+  const double scale = out.report.at("result").at("mm_per_unit").get<double>();
+  std::size_t triangles = 0;
+  for (const auto& strip : out.flat.at("strips")) {
+    const auto& v2 = strip.at("vertices2d");
+    auto at = [&](int i) -> Vec2 {
+      return scale * Vec2(v2[i][0].get<double>(), v2[i][1].get<double>());
+    };
+    for (const auto& t : strip.at("triangles")) {
+      const Vec2 a = at(t[0].get<int>()), b = at(t[1].get<int>()), c = at(t[2].get<int>());
+      EXPECT_GT(0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x()), 1.0)
+          << "flat strip " << strip.at("id") << " has a triangle without area";
+      ++triangles;
+    }
+    for (const auto& e : strip.at("boundary"))
+      EXPECT_GT((at(e.at("v1").get<int>()) - at(e.at("v0").get<int>())).norm(), 1.0)
+          << "flat strip " << strip.at("id") << " has a zero-length boundary edge";
+  }
+  EXPECT_EQ(triangles, 12u);
+  const auto pieces = nlohmann::json::parse(testing::read_text(out.dir / "pieces.json"));
+  EXPECT_LE(pieces.at("pieces").size(), 12u);
+  EXPECT_LE(out.report.at("result").at("pages").get<int>(), 12);  // 13 before
+}
+
 // Three meshes of libcgal-demo (installed by scripts/install-deps.sh), when present.
 TEST(Pieces, ExactSeamsOnLibcgalDemoMeshes) {
   const std::filesystem::path archive = "/usr/share/doc/libcgal-dev/data.tar.gz";

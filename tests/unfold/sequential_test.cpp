@@ -209,7 +209,7 @@ TEST(UnfoldSequential, OpenStripKeepsUvsAndStaysWhole) {
 TEST(UnfoldSequential, DegenerateTrianglesStayFinite) {
   std::vector<Vec3> a = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0)};
   std::vector<Vec3> b = {Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(2, 1, 1), Vec3(3, 1, 1)};
-  RuledStrip strip = ladder_strip(a, b, false);  // a_1 == b_1: triangle (a0, a1, b1) is flat
+  RuledStrip strip = ladder_strip(a, b, false);  // a_1 == b_1: two triangles have no area
   strip.mesh.triangles.push_back({0, 0, 4});     // repeated index: skipped
   auto flat = unfold_strip(strip, 0, 0);
   std::size_t triangles = 0;
@@ -218,7 +218,39 @@ TEST(UnfoldSequential, DegenerateTrianglesStayFinite) {
     expect_isometric(s);
     triangles += s.triangles.size();
   }
-  EXPECT_EQ(triangles, strip.mesh.triangles.size() - 1);
+  // The repeated index is skipped; (a0, a1, b1) and (a1, b2, b1) have two corners at one
+  // point (a1 == b1) and go too.
+  EXPECT_EQ(triangles, strip.mesh.triangles.size() - 3);
+}
+
+// A flat square fanned from one of its own corners (the apex lies on the polyline, as when the
+// ruled stage fans a disc-shaped part from a boundary vertex): the two triangles with two
+// corners at the apex have no area and are dropped, their copies of the apex welded, so the
+// flat strip is the square's two triangles with four boundary edges, none of zero length.
+TEST(UnfoldSequential, FanFromItsOwnCornerLeavesNoEmptyTriangle) {
+  const std::vector<Vec3> square = {Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 0), Vec3(0, 2, 0)};
+  const auto flat = unfold_strip(unfold_testing::fan_strip(square, square[0], true), 0, 0);
+  ASSERT_EQ(flat.size(), 1u);
+  EXPECT_EQ(flat[0].triangles.size(), 2u);
+  EXPECT_EQ(flat[0].vertices2d.size(), 4u);
+  EXPECT_EQ(flat[0].boundary.size(), 4u);
+  expect_isometric(flat[0]);
+  double area = 0;
+  for (const Triangle& t : flat[0].triangles) {
+    const double twice = unfold_testing::cross2(flat[0].vertices2d[t[1]] - flat[0].vertices2d[t[0]],
+                                                flat[0].vertices2d[t[2]] - flat[0].vertices2d[t[0]]);
+    EXPECT_GT(twice, 1.0);
+    area += 0.5 * twice;
+  }
+  EXPECT_NEAR(area, 4.0, 1e-12);
+  for (const BoundaryEdge& e : flat[0].boundary)
+    EXPECT_GT((flat[0].vertices2d[e.v1] - flat[0].vertices2d[e.v0]).norm(), 1.0);
+  // The same fan with its apex at the corner but one copy of it moved off (a real fan): kept.
+  const auto real = unfold_strip(
+      unfold_testing::fan_strip(square, Vec3(0, 0, 0.5), true), 0, 0);
+  std::size_t triangles = 0;
+  for (const FlatStrip& s : real) triangles += s.triangles.size();
+  EXPECT_EQ(triangles, 4u);
 }
 
 // A flat disc fanned from its centre lies flat in one piece: no radial slit, only the rim
