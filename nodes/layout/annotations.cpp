@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 
@@ -416,51 +417,68 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     // A leader line from `anchor` to a text box at `radius` (in order) along a ray turned 0,
     // +10, -10, +20, ... degrees (to +-170) from `normal`: the box must pass `box_ok`, the line
     // (stopping short of the box) must cross no cut line and no text, and pass `line_ok`.
+    // The text at `centre` (running along `along`, smallest size) with a leader line from
+    // `anchor`: the box `candidate` passed its test already; the line (stopping short of the
+    // box) must cross no cut line and no text, and pass `line_ok`.
+    auto leader_at = [&](const Vec2& anchor, const Vec2& centre, const Vec2& along,
+                         const std::array<Vec2, 4>& candidate, bool outside, auto line_ok) {
+      const double reach = (centre - anchor).norm();
+      if (reach <= 0) return false;
+      const Vec2 ray = (centre - anchor) / reach;
+      const auto parts = segment_outside(anchor, centre, candidate);
+      if (parts.empty()) return false;
+      const Vec2 start = anchor + 0.2 * ray;
+      const Vec2 end = parts.front()[1] - 0.3 * ray;
+      if ((end - start).dot(ray) <= 0.1) return false;
+      for (const auto& line : lines)
+        if (segments_cross(start, end, line[0], line[1])) return false;
+      for (const auto& other : taken)
+        if (segment_crosses(start, end, other)) return false;
+      if (!line_ok(start, end)) return false;
+      label.position = centre;
+      label.direction = along;
+      label.size = smallest;
+      label.outside = outside;
+      label.leader = {anchor, end};
+      taken.push_back(candidate);
+      taken.push_back(leader_box(label.leader));
+      return true;
+    };
+    // A leader line from `anchor` to a text box at `radius` (in order) along a ray turned 0,
+    // +10, -10, +20, ... degrees (to +-170) from `normal`: the box must pass `box_ok`.
     auto leader_to = [&](const Vec2& anchor, const Vec2& along, const Vec2& normal,
                          std::initializer_list<double> radii, bool outside, auto box_ok,
                          auto line_ok) {
-      const double size = smallest;
       for (double radius : radii) {
         for (int step = 0; step <= 34; ++step) {
           const double turn = (step % 2 == 1 ? 1 : -1) * ((step + 1) / 2) * 10.0 * kDegree;
           const Vec2 ray = std::cos(turn) * normal + std::sin(turn) * along;
           const Vec2 centre = anchor + radius * ray;
-          const auto candidate = text_box(centre, along, size, label.text.size());
-          if (!box_ok(candidate)) continue;
-          const auto parts = segment_outside(anchor, centre, candidate);
-          if (parts.empty()) continue;
-          const Vec2 start = anchor + 0.2 * ray;
-          const Vec2 end = parts.front()[1] - 0.3 * ray;
-          if ((end - start).dot(ray) <= 0.1) continue;
-          bool free = line_ok(start, end);
-          for (const auto& line : lines)
-            free = free && !segments_cross(start, end, line[0], line[1]);
-          for (const auto& other : taken) free = free && !segment_crosses(start, end, other);
-          if (!free) continue;
-          label.position = centre;
-          label.direction = along;
-          label.size = size;
-          label.outside = outside;
-          label.leader = {anchor, end};
-          taken.push_back(candidate);
-          taken.push_back(leader_box(label.leader));
-          return true;
+          const auto candidate = text_box(centre, along, smallest, label.text.size());
+          if (box_ok(candidate) && leader_at(anchor, centre, along, candidate, outside, line_ok))
+            return true;
         }
       }
       return false;
     };
+    // A leader that runs off the piece: it touches no triangle and ends outside every tab.
+    auto off_piece = [&](const Vec2& start, const Vec2& end) {
+      const auto thin = leader_box({start, end});
+      for (const auto& t : shapes.triangles)
+        if (convex_overlap(thin.data(), 4, t.data(), 3, 0.01)) return false;
+      for (const auto& flap : flaps)
+        if (point_in_polygon(start, flap) || point_in_polygon(end, flap)) return false;
+      return true;
+    };
+    // A leader that stays on the piece: it crosses no cut line, so its middle tells.
+    auto on_piece = [&](const Vec2& start, const Vec2& end) {
+      const Vec2 middle = 0.5 * (start + end);
+      return box_on_piece({middle, middle, middle, middle}, shapes);
+    };
     // Off the piece: the line touches no triangle of the piece and ends outside every tab.
     auto leader_outside = [&](const Vec2& anchor, const Vec2& along, const Vec2& outward) {
       return leader_to(anchor, along, outward, {4.0, 6.0, 8.0, 11.0, 15.0, 20.0, 26.0}, true,
-                       fits_outside, [&](const Vec2& start, const Vec2& end) {
-                         const auto thin = leader_box({start, end});
-                         for (const auto& t : shapes.triangles)
-                           if (convex_overlap(thin.data(), 4, t.data(), 3, 0.01)) return false;
-                         for (const auto& flap : flaps)
-                           if (point_in_polygon(start, flap) || point_in_polygon(end, flap))
-                             return false;
-                         return true;
-                       });
+                       fits_outside, off_piece);
     };
     // From the seam, its middle first: a seam in a narrow slit is reached from the slit's
     // mouth.
@@ -497,8 +515,52 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       Vec2 along;
       const Vec2 anchor = point_at(fraction * total, &along);
       placed = leader_to(anchor, along, Vec2(-along.y(), along.x()),
-                         {5.0, 7.0, 9.0, 12.0, 15.0, 19.0, 24.0, 30.0}, false, fits,
-                         [](const Vec2&, const Vec2&) { return true; });
+                         {5.0, 7.0, 9.0, 12.0, 15.0, 19.0, 24.0, 30.0}, false, fits, on_piece);
+    }
+    // Anywhere within 36 mm of the seam, on the piece or beside it: centres on a 1.5 mm grid,
+    // nearest the seam first, each reached by a straight leader from the nearest of seven
+    // points along the seam where one is free. The rays above miss a free spot behind a
+    // crowd of other labels; this finds it, at some cost, for the few labels that get here.
+    if (!placed) {
+      struct Anchor {
+        Vec2 at, along;
+      };
+      std::vector<Anchor> anchors;
+      Box2 around;
+      for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9, 0.0, 1.0}) {
+        Anchor a;
+        a.at = point_at(fraction * total, &a.along);
+        anchors.push_back(a);
+        around.add(a.at);
+      }
+      constexpr double kReach = 36.0, kStep = 1.5, kNearest = 2.0;
+      std::vector<std::pair<double, Vec2>> centres;
+      for (double x = around.lo.x() - kReach; x <= around.hi.x() + kReach; x += kStep)
+        for (double y = around.lo.y() - kReach; y <= around.hi.y() + kReach; y += kStep) {
+          const Vec2 centre(x, y);
+          double nearest = std::numeric_limits<double>::infinity();
+          for (const Anchor& a : anchors) nearest = std::min(nearest, (centre - a.at).norm());
+          if (nearest >= kNearest && nearest <= kReach) centres.push_back({nearest, centre});
+        }
+      std::stable_sort(centres.begin(), centres.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      std::vector<const Anchor*> order;
+      for (const auto& [distance, centre] : centres) {
+        if (placed) break;
+        order.clear();
+        for (const Anchor& a : anchors) order.push_back(&a);
+        std::stable_sort(order.begin(), order.end(), [&](const Anchor* x, const Anchor* y) {
+          return (centre - x->at).squaredNorm() < (centre - y->at).squaredNorm();
+        });
+        for (const Anchor* a : order) {
+          const auto candidate = text_box(centre, a->along, smallest, label.text.size());
+          if (fits(candidate))
+            placed = leader_at(a->at, centre, a->along, candidate, false, on_piece);
+          else if (fits_outside(candidate))
+            placed = leader_at(a->at, centre, a->along, candidate, true, off_piece);
+          if (placed) break;
+        }
+      }
     }
     if (!placed) {
       label.size = std::max(label.size, smallest);
