@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <deque>
 #include <limits>
 #include <unordered_map>
 #include <utility>
@@ -183,7 +185,159 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+// True when q lies in the convex quad (on its edges included).
+bool inside_convex(const Vec2& q, const std::array<Vec2, 4>& box) {
+  bool positive = false, negative = false;
+  for (int i = 0; i < 4; ++i) {
+    const double side = cross(box[(i + 1) % 4] - box[i], q - box[i]);
+    positive = positive || side > 0;
+    negative = negative || side < 0;
+  }
+  return !(positive && negative);
+}
+
+// Leaders that bend: a breadth-first search on a square grid around a seam, stepping between
+// neighbouring grid points along moves that cross no cut line and no text, from points just
+// off the seam; the first grid point (fewest steps) whose text box passes a test ends it, and
+// the path is then straightened. Cut lines are kept in buckets so each move tests only those
+// near it.
+class LeaderRouter {
+ public:
+  LeaderRouter(const std::vector<std::array<Vec2, 2>>& lines, double step)
+      : lines_(lines), step_(step) {
+    for (const auto& line : lines) bounds_.add(line[0]), bounds_.add(line[1]);
+    if (lines.empty()) return;
+    bounds_.lo -= Vec2::Constant(kBucket);
+    columns_ = static_cast<int>((bounds_.hi.x() - bounds_.lo.x()) / kBucket) + 2;
+    rows_ = static_cast<int>((bounds_.hi.y() - bounds_.lo.y()) / kBucket) + 2;
+    buckets_.resize(static_cast<std::size_t>(columns_) * rows_);
+    for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
+      const auto [c0, r0] = cell(lines[i][0].cwiseMin(lines[i][1]));
+      const auto [c1, r1] = cell(lines[i][0].cwiseMax(lines[i][1]));
+      for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) buckets_[static_cast<std::size_t>(r) * columns_ + c].push_back(i);
+    }
+  }
+
+  // True when segment a-b crosses no cut line and no box of `taken`.
+  bool clear(const Vec2& a, const Vec2& b, const std::vector<std::array<Vec2, 4>>& taken) const {
+    if (!buckets_.empty()) {
+      const auto [c0, r0] = cell(a.cwiseMin(b));
+      const auto [c1, r1] = cell(a.cwiseMax(b));
+      for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c)
+          for (int i : buckets_[static_cast<std::size_t>(r) * columns_ + c])
+            if (segments_cross(a, b, lines_[i][0], lines_[i][1])) return false;
+    }
+    for (const auto& box : taken)
+      if (segment_crosses(a, b, box)) return false;
+    return true;
+  }
+
+  // True when no cut line crosses the convex quad.
+  bool box_clear(const std::array<Vec2, 4>& box) const {
+    if (buckets_.empty()) return true;
+    Vec2 lo = box[0], hi = box[0];
+    for (const Vec2& q : box) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    const auto [c0, r0] = cell(lo);
+    const auto [c1, r1] = cell(hi);
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c)
+        for (int i : buckets_[static_cast<std::size_t>(r) * columns_ + c])
+          if (segment_crosses(lines_[i][0], lines_[i][1], box)) return false;
+    return true;
+  }
+
+  // The path from one of `starts` (each with the direction its text runs along) to the first
+  // grid point within `reach` of it where `box_ok(centre, along)` holds, grid points inside a
+  // box of `taken` left out: the points of the path, start first, and the start's index; empty
+  // when none is found.
+  template <class BoxOk>
+  std::pair<std::vector<Vec2>, int> route(const std::vector<Vec2>& starts, double reach,
+                                          const std::vector<std::array<Vec2, 4>>& taken,
+                                          BoxOk box_ok) const {
+    Box2 around;
+    for (const Vec2& s : starts) around.add(s);
+    const Vec2 origin = around.lo - Vec2::Constant(reach);
+    const int n = static_cast<int>((around.hi.x() - around.lo.x() + 2 * reach) / step_) + 2;
+    const int m = static_cast<int>((around.hi.y() - around.lo.y() + 2 * reach) / step_) + 2;
+    auto point = [&](int node) { return Vec2(origin + step_ * Vec2(node % n, node / n)); };
+    auto free = [&](const Vec2& q) {
+      for (const auto& box : taken)
+        if (inside_convex(q, box)) return false;
+      return true;
+    };
+    std::vector<int> parent(static_cast<std::size_t>(n) * m, -2), source(parent.size(), -1);
+    std::deque<int> queue;
+    for (int k = 0; k < static_cast<int>(starts.size()); ++k) {
+      const Vec2 g = (starts[k] - origin) / step_;
+      for (int dx = 0; dx <= 1; ++dx)
+        for (int dy = 0; dy <= 1; ++dy) {
+          const int x = static_cast<int>(std::floor(g.x())) + dx;
+          const int y = static_cast<int>(std::floor(g.y())) + dy;
+          if (x < 0 || y < 0 || x >= n || y >= m) continue;
+          const int node = y * n + x;
+          if (parent[node] != -2 || !free(point(node)) || !clear(starts[k], point(node), taken))
+            continue;
+          parent[node] = -1;
+          source[node] = k;
+          queue.push_back(node);
+        }
+    }
+    while (!queue.empty()) {
+      const int node = queue.front();
+      queue.pop_front();
+      const Vec2 here = point(node);
+      const int k = source[node];
+      if ((here - starts[k]).norm() > reach) continue;
+      if ((here - starts[k]).norm() >= 2.0 && box_ok(here, k)) {
+        std::vector<Vec2> path{here};
+        for (int at = parent[node]; at >= 0; at = parent[at]) path.push_back(point(at));
+        path.push_back(starts[k]);
+        std::reverse(path.begin(), path.end());
+        return {path, k};
+      }
+      const int x = node % n, y = node / n;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy) {
+          const int nx = x + dx, ny = y + dy;
+          if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= n || ny >= m) continue;
+          const int next = ny * n + nx;
+          if (parent[next] != -2) continue;
+          const Vec2 there = point(next);
+          if (!free(there) || !clear(here, there, taken)) continue;
+          parent[next] = node;
+          source[next] = k;
+          queue.push_back(next);
+        }
+    }
+    return {{}, -1};
+  }
+
+ private:
+  static constexpr double kBucket = 4.0;
+
+  std::pair<int, int> cell(const Vec2& p) const {
+    const int c = static_cast<int>(std::floor((p.x() - bounds_.lo.x()) / kBucket));
+    const int r = static_cast<int>(std::floor((p.y() - bounds_.lo.y()) / kBucket));
+    return {std::clamp(c, 0, columns_ - 1), std::clamp(r, 0, rows_ - 1)};
+  }
+
+  const std::vector<std::array<Vec2, 2>>& lines_;
+  double step_;
+  Box2 bounds_;
+  int columns_ = 0, rows_ = 0;
+  std::vector<std::vector<int>> buckets_;
+};
+
 }  // namespace
+
+std::vector<std::array<Vec2, 4>> leader_boxes(const std::vector<Vec2>& leader) {
+  std::vector<std::array<Vec2, 4>> boxes;
+  for (std::size_t i = 0; i + 1 < leader.size(); ++i)
+    boxes.push_back(leader_box({leader[i], leader[i + 1]}));
+  return boxes;
+}
 
 std::array<Vec2, 4> leader_box(const std::vector<Vec2>& leader) {
   const Vec2 d = leader.back() - leader.front();
@@ -200,12 +354,11 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
   const std::vector<std::array<Vec2, 2>> lines = cut_lines(data, piece);
   const double smallest = options.min_text_mm;
   std::vector<std::array<Vec2, 4>> taken;
+  const LeaderRouter router(lines, 1.0);
   auto clear = [&](const std::array<Vec2, 4>& candidate) {
     for (const auto& other : taken)
       if (convex_overlap(candidate.data(), 4, other.data(), 4, 0.0)) return false;
-    for (const auto& line : lines)
-      if (segment_crosses(line[0], line[1], candidate)) return false;
-    return true;
+    return router.box_clear(candidate);
   };
   auto fits = [&](const std::array<Vec2, 4>& candidate) {
     return box_on_piece(candidate, shapes) && clear(candidate);
@@ -219,8 +372,13 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
   }
   auto fits_outside = [&](const std::array<Vec2, 4>& candidate) {
     if (!clear(candidate)) return false;
-    for (const auto& t : shapes.triangles)
-      if (convex_overlap(candidate.data(), 4, t.data(), 3, 0.0)) return false;
+    Box2 around;
+    for (const Vec2& q : candidate) around.add(q);
+    bool hit = false;
+    shapes.near(around, [&](int t) {
+      hit = hit || convex_overlap(candidate.data(), 4, shapes.triangles[t].data(), 3, 0.0);
+    });
+    if (hit) return false;
     for (const auto& flap : flaps) {
       for (std::size_t i = 0; i < flap.size(); ++i)
         if (segment_crosses(flap[i], flap[(i + 1) % flap.size()], candidate)) return false;
@@ -430,11 +588,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       const Vec2 start = anchor + 0.2 * ray;
       const Vec2 end = parts.front()[1] - 0.3 * ray;
       if ((end - start).dot(ray) <= 0.1) return false;
-      for (const auto& line : lines)
-        if (segments_cross(start, end, line[0], line[1])) return false;
-      for (const auto& other : taken)
-        if (segment_crosses(start, end, other)) return false;
-      if (!line_ok(start, end)) return false;
+      if (!router.clear(start, end, taken) || !line_ok(start, end)) return false;
       label.position = centre;
       label.direction = along;
       label.size = smallest;
@@ -464,8 +618,13 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     // A leader that runs off the piece: it touches no triangle and ends outside every tab.
     auto off_piece = [&](const Vec2& start, const Vec2& end) {
       const auto thin = leader_box({start, end});
-      for (const auto& t : shapes.triangles)
-        if (convex_overlap(thin.data(), 4, t.data(), 3, 0.01)) return false;
+      Box2 around;
+      for (const Vec2& q : thin) around.add(q);
+      bool hit = false;
+      shapes.near(around, [&](int t) {
+        hit = hit || convex_overlap(thin.data(), 4, shapes.triangles[t].data(), 3, 0.01);
+      });
+      if (hit) return false;
       for (const auto& flap : flaps)
         if (point_in_polygon(start, flap) || point_in_polygon(end, flap)) return false;
       return true;
@@ -561,6 +720,64 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
           if (placed) break;
         }
       }
+    }
+    // Round a corner: a leader that bends, found by a search through the free paper within
+    // 40 mm, on the piece or off it, from points just off the seam; straightened after, and
+    // ended where it meets its text. A seam deep in a notch reaches the open paper this way.
+    for (bool outside : {false, true}) {
+      if (placed) break;
+      std::vector<Vec2> starts, alongs;
+      for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
+        Vec2 along;
+        const Vec2 at = point_at(fraction * total, &along);
+        const Vec2 inward(-along.y(), along.x());
+        const Vec2 start = at + (outside ? -0.4 : 0.4) * inward;
+        if (box_on_piece({start, start, start, start}, shapes) == outside) continue;
+        starts.push_back(start);
+        alongs.push_back(along);
+      }
+      if (starts.empty()) continue;
+      std::array<Vec2, 4> found;
+      auto box_ok = [&](const Vec2& centre, int k) {
+        const auto candidate = text_box(centre, alongs[k], smallest, label.text.size());
+        if (inside_convex(starts[k], candidate)) return false;
+        if (!(outside ? fits_outside(candidate) : fits(candidate))) return false;
+        found = candidate;
+        return true;
+      };
+      auto [path, k] = router.route(starts, 40.0, taken, box_ok);
+      if (path.empty()) continue;
+      // Straightened: from each point on, to the farthest later point in plain sight; then cut
+      // where it first meets the text's box.
+      std::vector<Vec2> leader{path.front()};
+      for (std::size_t i = 0; i + 1 < path.size();) {
+        std::size_t j = path.size() - 1;
+        while (j > i + 1 && !(router.clear(path[i], path[j], taken) &&
+                              (outside ? off_piece(path[i], path[j])
+                                       : on_piece(path[i], path[j]))))
+          --j;
+        leader.push_back(path[j]);
+        i = j;
+      }
+      for (std::size_t i = 0; i + 1 < leader.size(); ++i) {
+        const auto parts = segment_outside(leader[i], leader[i + 1], found);
+        if (parts.size() == 1 && (parts.front()[1] - leader[i + 1]).norm() < 1e-12) continue;
+        const Vec2 d = (leader[i + 1] - leader[i]).normalized();
+        leader.resize(i + 2);
+        leader.back() = parts.empty() ? leader[i] : Vec2(parts.front()[1] - 0.3 * d);
+        break;
+      }
+      if (leader.size() < 2 || (leader.back() - leader[leader.size() - 2]).norm() < 0.1) continue;
+      // The seam's point the leader starts from: the start moved back onto the seam.
+      leader.front() = starts[k] + (outside ? 0.4 : -0.4) * Vec2(-alongs[k].y(), alongs[k].x());
+      label.position = 0.25 * (found[0] + found[1] + found[2] + found[3]);
+      label.direction = alongs[k];
+      label.size = smallest;
+      label.outside = outside;
+      label.leader = leader;
+      taken.push_back(found);
+      for (const auto& box : leader_boxes(label.leader)) taken.push_back(box);
+      placed = true;
     }
     if (!placed) {
       label.size = std::max(label.size, smallest);

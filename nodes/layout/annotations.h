@@ -47,8 +47,12 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
 /// Half the width of a label's leader line as the layout keeps it clear (mm).
 inline constexpr double kLeaderHalfWidth = 0.15;
 
-/// The thin box a leader line (two points) takes, for clearance checks and nesting.
+/// The thin box a straight leader line (its first and last points) takes.
 std::array<Vec2, 4> leader_box(const std::vector<Vec2>& leader);
+
+/// The thin boxes a leader line (a polyline: straight, or bent round a corner) takes, one per
+/// segment, for clearance checks and nesting.
+std::vector<std::array<Vec2, 4>> leader_boxes(const std::vector<Vec2>& leader);
 
 /// The boxes of the piece's number and seam labels (strip frame mm).
 std::vector<std::array<Vec2, 4>> text_boxes(const Piece& piece);

@@ -37,7 +37,7 @@ using layout_internal::chain_length;
 using layout_internal::clear_of_text;
 using layout_internal::convex_hull;
 using layout_internal::convex_overlap;
-using layout_internal::leader_box;
+using layout_internal::leader_boxes;
 using layout_internal::cross;
 using layout_internal::Flap;
 using layout_internal::format_mm;
@@ -243,7 +243,7 @@ std::vector<std::array<Vec2, 4>> outside_text(const Piece& piece) {
   for (const PieceLabel& label : piece.labels) {
     if (label.outside)
       boxes.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
-    if (!label.leader.empty()) boxes.push_back(leader_box(label.leader));
+    for (const auto& box : leader_boxes(label.leader)) boxes.push_back(box);
   }
   if (piece.number && piece.number->outside)
     boxes.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,

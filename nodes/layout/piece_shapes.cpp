@@ -1,24 +1,29 @@
 // Collision tests against a piece's own triangles and tab slices.
 #include "nodes/layout/piece_shapes.h"
 
+#include <algorithm>
 #include <cstddef>
 
 namespace papercraft::layout_internal {
 namespace {
 
 bool inside_triangles(const Vec2& p, const PieceShapes& shapes) {
-  for (std::size_t t = 0; t < shapes.triangles.size(); ++t) {
+  Box2 at;
+  at.add(p - Vec2::Constant(1e-9));
+  at.add(p + Vec2::Constant(1e-9));
+  bool inside = false;
+  shapes.near(at, [&](int t) {
+    if (inside) return;
     const Box2& box = shapes.triangle_boxes[t];
     if (p.x() < box.lo.x() - 1e-9 || p.x() > box.hi.x() + 1e-9 || p.y() < box.lo.y() - 1e-9 ||
         p.y() > box.hi.y() + 1e-9)
-      continue;
+      return;
     const auto& c = shapes.triangles[t];
     const double scale = 1e-9 * (box.hi - box.lo).squaredNorm();
-    if (cross(c[1] - c[0], p - c[0]) >= -scale && cross(c[2] - c[1], p - c[1]) >= -scale &&
-        cross(c[0] - c[2], p - c[2]) >= -scale)
-      return true;
-  }
-  return false;
+    inside = cross(c[1] - c[0], p - c[0]) >= -scale && cross(c[2] - c[1], p - c[1]) >= -scale &&
+             cross(c[0] - c[2], p - c[2]) >= -scale;
+  });
+  return inside;
 }
 
 }  // namespace
@@ -32,6 +37,21 @@ PieceShapes piece_shapes(const StripData& data, const Piece& piece) {
     for (const Vec2& c : corners) box.add(c);
     shapes.triangles.push_back(corners);
     shapes.triangle_boxes.push_back(box);
+    shapes.bounds.add(box.lo);
+    shapes.bounds.add(box.hi);
+  }
+  if (shapes.triangles.empty()) return shapes;
+  const Vec2 extent = shapes.bounds.hi - shapes.bounds.lo;
+  shapes.bucket_mm = std::max(shapes.bucket_mm, extent.maxCoeff() / 256.0);
+  shapes.columns = static_cast<int>((shapes.bounds.hi.x() - shapes.bounds.lo.x()) / shapes.bucket_mm) + 1;
+  shapes.rows = static_cast<int>((shapes.bounds.hi.y() - shapes.bounds.lo.y()) / shapes.bucket_mm) + 1;
+  shapes.buckets.resize(static_cast<std::size_t>(shapes.columns) * shapes.rows);
+  for (int t = 0; t < static_cast<int>(shapes.triangles.size()); ++t) {
+    const auto [c0, r0] = shapes.bucket(shapes.triangle_boxes[t].lo);
+    const auto [c1, r1] = shapes.bucket(shapes.triangle_boxes[t].hi);
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c)
+        shapes.buckets[static_cast<std::size_t>(r) * shapes.columns + c].push_back(t);
   }
   return shapes;
 }
@@ -42,10 +62,12 @@ bool slices_collide(const std::vector<std::vector<Vec2>>& slices, const PieceSha
     Box2 box;
     for (const Vec2& c : slice) box.add(c);
     const int n = static_cast<int>(slice.size());
-    for (std::size_t t = 0; t < shapes.triangles.size(); ++t)
-      if (box.overlaps(shapes.triangle_boxes[t]) &&
-          convex_overlap(slice.data(), n, shapes.triangles[t].data(), 3, depth))
-        return true;
+    bool hit = false;
+    shapes.near(box, [&](int t) {
+      hit = hit || (box.overlaps(shapes.triangle_boxes[t]) &&
+                    convex_overlap(slice.data(), n, shapes.triangles[t].data(), 3, depth));
+    });
+    if (hit) return true;
     for (std::size_t q = 0; q < shapes.slices.size(); ++q)
       if (box.overlaps(shapes.slice_boxes[q]) &&
           convex_overlap(slice.data(), n, shapes.slices[q].data(),

@@ -302,18 +302,21 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
     };
     for (const PlacedPiece& piece : page.pieces)
       for (const Label& label : piece.labels) {
-        if (label.leader.size() < 2) continue;
-        const Vec2 direction = (label.leader.back() - label.leader.front()).normalized();
-        const Vec2 start = label.leader.front() + 0.1 * direction, end = label.leader.back();
-        for (const auto& cut : cuts)
-          EXPECT_FALSE(crosses(start, end, cut[0], cut[1]))
-              << "the leader of " << label.text << " crosses a cut line on page " << p;
-        const auto own = label_box(label);
-        for (std::size_t a = 0; a < boxes.size(); ++a) {
-          if (boxes[a] == own) continue;
-          for (int i = 0; i < 4; ++i)
-            EXPECT_FALSE(crosses(start, end, boxes[a][i], boxes[a][(i + 1) % 4]))
-                << "the leader of " << label.text << " crosses label " << names[a];
+        // Straight, or bent round a corner: every segment.
+        for (std::size_t k = 0; k + 1 < label.leader.size(); ++k) {
+          const Vec2 direction = (label.leader[k + 1] - label.leader[k]).normalized();
+          const Vec2 start = label.leader[k] + (k == 0 ? 0.1 : 0.0) * direction;
+          const Vec2 end = label.leader[k + 1];
+          for (const auto& cut : cuts)
+            EXPECT_FALSE(crosses(start, end, cut[0], cut[1]))
+                << "the leader of " << label.text << " crosses a cut line on page " << p;
+          const auto own = label_box(label);
+          for (std::size_t a = 0; a < boxes.size(); ++a) {
+            if (boxes[a] == own) continue;
+            for (int i = 0; i < 4; ++i)
+              EXPECT_FALSE(crosses(start, end, boxes[a][i], boxes[a][(i + 1) % 4]))
+                  << "the leader of " << label.text << " crosses label " << names[a];
+          }
         }
       }
     // No two pieces (with their tabs) overlap.
