@@ -866,6 +866,46 @@ TEST(LayoutPages, LabelInANarrowSlotGetsALeaderLine) {
   EXPECT_EQ(leaders, 1);
 }
 
+// The same seam at the bottom of a slot that bends (up 13.5 mm, right 3 mm, up and out) in a
+// piece whose arms are at most 3 mm wide: the only paper with room for the label is the block
+// of 4.5 x 4.5 mm beyond the bend, and no straight line reaches it from the seam, nor free
+// paper off the piece. So the leader bends (more than two points), still crossing no cut
+// line and no text.
+TEST(LayoutPages, LabelInABentSlotGetsALeaderThatBends) {
+  auto slot = [](int i, int j) {
+    return (i == 1 && j >= 1 && j <= 10) || (j == 10 && i >= 1 && i <= 3) || (i == 3 && j >= 10);
+  };
+  FlatStrip comb = cell_strip(0, 5, 14, 1.5, 1.5, [&](int i, int j) { return !slot(i, j); });
+  mark_seam(comb, "S12", 1, [](const Vec2& m) {
+    return std::abs(m.y() - 1.5) < 1e-9 && std::abs(m.x() - 2.25) < 1e-9;
+  });
+  FlatStrip block = cell_strip(1, 4, 4, 5.0, 5.0);
+  mark_seam(block, "S12", 0, [](const Vec2& m) {
+    return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9;
+  });
+  for (Vec2& v : block.vertices2d)
+    if (std::abs(v.y()) < 1e-9 && (std::abs(v.x() - 0.0) < 1e-9 || std::abs(v.x() - 5.0) < 1e-9))
+      v.x() = v.x() < 1 ? 1.75 : 3.25;
+  for (std::size_t i = 0; i < block.vertices2d.size(); ++i)
+    block.vertices3d[i] = Vec3(block.vertices2d[i].x(), block.vertices2d[i].y(), 0.0);
+  const std::vector<FlatStrip> strips{comb, block};
+  LayoutOptions options;
+  options.scale = 1;
+  options.tab_width_mm = 0;
+  const PatternLayout layout = layout_pages(strips, options);
+  expect_valid_layout(layout, strips, options);
+  EXPECT_EQ(layout.stats.overlapping_text, 0);
+  int bent = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces) {
+      if (piece.strip_id != 0) continue;
+      ASSERT_EQ(piece.labels.size(), 1u);
+      EXPECT_GT(piece.labels[0].leader.size(), 2u) << "the leader does not bend";
+      bent += piece.labels[0].leader.size() > 2 ? 1 : 0;
+    }
+  EXPECT_EQ(bent, 1);
+}
+
 // Random rectangles seamed in pairs along their long sides, random scale: valid layouts.
 TEST(LayoutPages, RandomStripsWithSeamsKeepEveryInvariant) {
   std::mt19937 random(12345);
