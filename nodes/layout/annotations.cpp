@@ -769,7 +769,13 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (leader.size() < 2 || (leader.back() - leader[leader.size() - 2]).norm() < 0.1) continue;
       // The seam's point the leader starts from: the start moved back onto the seam.
-      leader.front() = starts[k] + (outside ? 0.4 : -0.4) * Vec2(-alongs[k].y(), alongs[k].x());
+      // It starts on the seam: the start moved back onto it (or joined to it, where the first
+      // segment would not stay clear from there).
+      const Vec2 on_seam = starts[k] + (outside ? 0.4 : -0.4) * Vec2(-alongs[k].y(), alongs[k].x());
+      if (router.clear(on_seam, leader[1], taken))
+        leader.front() = on_seam;
+      else
+        leader.insert(leader.begin(), on_seam);
       label.position = 0.25 * (found[0] + found[1] + found[2] + found[3]);
       label.direction = alongs[k];
       label.size = smallest;
