@@ -722,11 +722,12 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
     }
     // Round a corner: a leader that bends, found by a search through the free paper within
-    // 40 mm, on the piece or off it, from points just off the seam; straightened after, and
-    // ended where it meets its text. A seam deep in a notch reaches the open paper this way.
+    // 40 mm, on the piece or off it, from points just off the seam (and off the outer edge of
+    // the seam's tab on this side, which may wall the seam in); straightened after, and ended
+    // where it meets its text. A seam deep in a notch reaches the open paper this way.
     for (bool outside : {false, true}) {
       if (placed) break;
-      std::vector<Vec2> starts, alongs;
+      std::vector<Vec2> starts, alongs, origins;  // origin: where the leader begins
       for (double fraction : {0.5, 0.3, 0.7, 0.1, 0.9}) {
         Vec2 along;
         const Vec2 at = point_at(fraction * total, &along);
@@ -735,6 +736,26 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         if (box_on_piece({start, start, start, start}, shapes) == outside) continue;
         starts.push_back(start);
         alongs.push_back(along);
+        origins.push_back(at);
+      }
+      for (const PieceTab& tab : piece.tabs) {
+        if (!outside || tab.label != label.text) continue;
+        for (int f : tab.flaps) {
+          const Flap& flap = piece.flaps[f];
+          if (flap.base.size() < 2 || flap.outer.size() < 2) continue;
+          const std::size_t i = (flap.outer.size() - 1) / 2;
+          const Vec2 a = flap.outer[i], b = flap.outer[i + 1];
+          if ((b - a).norm() < 1e-9) continue;
+          const Vec2 along = (b - a).normalized();
+          Vec2 outward(along.y(), -along.x());
+          Vec2 inside = Vec2::Zero();
+          for (const Vec2& q : flap.base) inside += q;
+          inside /= static_cast<double>(flap.base.size());
+          if (outward.dot(inside - a) > 0) outward = -outward;
+          starts.push_back(0.5 * (a + b) + 0.4 * outward);
+          alongs.push_back(along);
+          origins.push_back(0.5 * (a + b));
+        }
       }
       if (starts.empty()) continue;
       std::array<Vec2, 4> found;
@@ -769,13 +790,12 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (leader.size() < 2 || (leader.back() - leader[leader.size() - 2]).norm() < 0.1) continue;
       // The seam's point the leader starts from: the start moved back onto the seam.
-      // It starts on the seam: the start moved back onto it (or joined to it, where the first
-      // segment would not stay clear from there).
-      const Vec2 on_seam = starts[k] + (outside ? 0.4 : -0.4) * Vec2(-alongs[k].y(), alongs[k].x());
-      if (router.clear(on_seam, leader[1], taken))
-        leader.front() = on_seam;
+      // It starts on the seam or the tab's edge: the start moved back onto it (or joined to it,
+      // where the first segment would not stay clear from there).
+      if (router.clear(origins[k], leader[1], taken))
+        leader.front() = origins[k];
       else
-        leader.insert(leader.begin(), on_seam);
+        leader.insert(leader.begin(), origins[k]);
       label.position = 0.25 * (found[0] + found[1] + found[2] + found[3]);
       label.direction = alongs[k];
       label.size = smallest;
