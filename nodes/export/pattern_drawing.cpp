@@ -82,14 +82,18 @@ StylePreset style_preset_from_name(std::string_view name) {
 
 namespace {
 
+// Points nearer than this (mm) are one: the SVG prints 3 decimals, so a shorter segment would
+// print as one of zero length (a fold line's dash ending at a fan's apex, say).
+constexpr double kSamePointMm = 2e-3;
+
 // A polyline without repeated points (no zero-length segment reaches a cutter); empty when
 // fewer than two distinct points remain.
 std::vector<Vec2> without_repeats(const std::vector<Vec2>& line, bool closed) {
   std::vector<Vec2> out;
   for (const Vec2& p : line)
-    if (out.empty() || (p - out.back()).norm() > 1e-9) out.push_back(p);
+    if (out.empty() || (p - out.back()).norm() > kSamePointMm) out.push_back(p);
   if (closed)
-    while (out.size() > 1 && (out.front() - out.back()).norm() <= 1e-9) out.pop_back();
+    while (out.size() > 1 && (out.front() - out.back()).norm() <= kSamePointMm) out.pop_back();
   if (out.size() < 2) out.clear();
   return out;
 }
