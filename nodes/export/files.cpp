@@ -121,24 +121,22 @@ std::string pieces_json(const PatternLayout& layout) {
       nlohmann::json seams = nlohmann::json::array();
       for (const PieceSeam& seam : piece.seams)
         seams.push_back({{"label", seam.label}, {"partner", seam.partner}, {"tab", seam.tab}});
-      pieces.push_back(
-          {{"name", piece.name},
-           {"strip", piece.strip_id},
-           {"piece_index", piece.piece_index},
-           {"piece_count", piece.piece_count},
-           {"page", page + 1},
-           {"transform", transform_json(piece.transform)},
-           {"seams", std::move(seams)}});
+      pieces.push_back({{"name", piece.name},
+                        {"strip", piece.strip_id},
+                        {"piece_index", piece.piece_index},
+                        {"piece_count", piece.piece_count},
+                        {"page", page + 1},
+                        {"transform", transform_json(piece.transform)},
+                        {"seams", std::move(seams)}});
     }
   }
   nlohmann::json joints = nlohmann::json::array();
   for (std::size_t page = 0; page < layout.pages.size(); ++page) {
     for (const PlacedPiece& joint : layout.pages[page].joints) {
-      joints.push_back(
-          {{"seam", joint.name},
-           {"page", page + 1},
-           {"transform", transform_json(joint.transform)},
-           {"outline", joint.vertices}});
+      joints.push_back({{"seam", joint.name},
+                        {"page", page + 1},
+                        {"transform", transform_json(joint.transform)},
+                        {"outline", joint.vertices}});
     }
   }
   // In number order (1, 2, ..., 12a, 12b, ...), whatever page each lies on.

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <deque>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 
@@ -100,7 +100,8 @@ PieceLabel chain_label(const StripData& data, const Piece& piece, const Chain& c
   else
     at = 0.5;
   const Vec2 d = length > 0 ? Vec2((b - a) / length) : Vec2::UnitX();
-  return {text, a + at * (b - a) + Vec2(-d.y(), d.x()) * (0.6 * size + 0.6), d, size, -1, false, {}};
+  return {text, a + at * (b - a) + Vec2(-d.y(), d.x()) * (0.6 * size + 0.6), d, size, -1, false,
+          {}};
 }
 
 std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
@@ -196,26 +197,28 @@ bool inside_convex(const Vec2& q, const std::array<Vec2, 4>& box) {
   return !(positive && negative);
 }
 
-// Leaders that bend: a breadth-first search on a square grid around a seam, stepping between
-// neighbouring grid points along moves that cross no cut line and no text, from points just
-// off the seam; the first grid point (fewest steps) whose text box passes a test ends it, and
-// the path is then straightened. Cut lines are kept in buckets so each move tests only those
-// near it.
+// A piece's cut lines in square buckets (4 mm, coarser on a huge piece), so a text box or a
+// leader line is tested against the lines near it only; and the search for leaders that bend:
+// breadth first on a square grid around a seam, stepping between neighbouring grid points along
+// moves that cross no cut line and no text, from points just off the seam; the first grid
+// point (fewest steps) whose text box passes a test ends it.
 class LeaderRouter {
  public:
   LeaderRouter(const std::vector<std::array<Vec2, 2>>& lines, double step)
       : lines_(lines), step_(step) {
     for (const auto& line : lines) bounds_.add(line[0]), bounds_.add(line[1]);
     if (lines.empty()) return;
-    bounds_.lo -= Vec2::Constant(kBucket);
-    columns_ = static_cast<int>((bounds_.hi.x() - bounds_.lo.x()) / kBucket) + 2;
-    rows_ = static_cast<int>((bounds_.hi.y() - bounds_.lo.y()) / kBucket) + 2;
+    bucket_ = std::max(4.0, (bounds_.hi - bounds_.lo).maxCoeff() / 256.0);
+    bounds_.lo -= Vec2::Constant(bucket_);
+    columns_ = static_cast<int>((bounds_.hi.x() - bounds_.lo.x()) / bucket_) + 2;
+    rows_ = static_cast<int>((bounds_.hi.y() - bounds_.lo.y()) / bucket_) + 2;
     buckets_.resize(static_cast<std::size_t>(columns_) * rows_);
     for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
       const auto [c0, r0] = cell(lines[i][0].cwiseMin(lines[i][1]));
       const auto [c1, r1] = cell(lines[i][0].cwiseMax(lines[i][1]));
       for (int r = r0; r <= r1; ++r)
-        for (int c = c0; c <= c1; ++c) buckets_[static_cast<std::size_t>(r) * columns_ + c].push_back(i);
+        for (int c = c0; c <= c1; ++c)
+          buckets_[static_cast<std::size_t>(r) * columns_ + c].push_back(i);
     }
   }
 
@@ -248,10 +251,9 @@ class LeaderRouter {
     return true;
   }
 
-  // The path from one of `starts` (each with the direction its text runs along) to the first
-  // grid point within `reach` of it where `box_ok(centre, along)` holds, grid points inside a
-  // box of `taken` left out: the points of the path, start first, and the start's index; empty
-  // when none is found.
+  // The path from one of `starts` to the first grid point within `reach` of it where
+  // `box_ok(centre, start index)` holds, grid points inside a box of `taken` left out: the
+  // points of the path, start first, and the start's index; empty when none is found.
   template <class BoxOk>
   std::pair<std::vector<Vec2>, int> route(const std::vector<Vec2>& starts, double reach,
                                           const std::vector<std::array<Vec2, 4>>& taken,
@@ -315,16 +317,15 @@ class LeaderRouter {
   }
 
  private:
-  static constexpr double kBucket = 4.0;
-
   std::pair<int, int> cell(const Vec2& p) const {
-    const int c = static_cast<int>(std::floor((p.x() - bounds_.lo.x()) / kBucket));
-    const int r = static_cast<int>(std::floor((p.y() - bounds_.lo.y()) / kBucket));
+    const int c = static_cast<int>(std::floor((p.x() - bounds_.lo.x()) / bucket_));
+    const int r = static_cast<int>(std::floor((p.y() - bounds_.lo.y()) / bucket_));
     return {std::clamp(c, 0, columns_ - 1), std::clamp(r, 0, rows_ - 1)};
   }
 
   const std::vector<std::array<Vec2, 2>>& lines_;
   double step_;
+  double bucket_ = 4.0;
   Box2 bounds_;
   int columns_ = 0, rows_ = 0;
   std::vector<std::vector<int>> buckets_;
@@ -432,7 +433,8 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       const Vec2 along = (line[1] - line[0]) / length, middle = 0.5 * (line[0] + line[1]);
       for (double side : {1.0, -1.0}) {
         for (double gap : {0.6, 1.5, 3.0}) {
-          const Vec2 centre = middle + side * Vec2(-along.y(), along.x()) * (kHalfLineEm * size + gap);
+          const Vec2 centre =
+              middle + side * Vec2(-along.y(), along.x()) * (kHalfLineEm * size + gap);
           const auto candidate = text_box(centre, along, size, piece.number->text.size());
           if (!fits_outside(candidate)) continue;
           piece.number->position = centre;
@@ -774,8 +776,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       for (std::size_t i = 0; i + 1 < path.size();) {
         std::size_t j = path.size() - 1;
         while (j > i + 1 && !(router.clear(path[i], path[j], taken) &&
-                              (outside ? off_piece(path[i], path[j])
-                                       : on_piece(path[i], path[j]))))
+                              (outside ? off_piece(path[i], path[j]) : on_piece(path[i], path[j]))))
           --j;
         leader.push_back(path[j]);
         i = j;

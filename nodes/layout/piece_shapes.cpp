@@ -43,8 +43,10 @@ PieceShapes piece_shapes(const StripData& data, const Piece& piece) {
   if (shapes.triangles.empty()) return shapes;
   const Vec2 extent = shapes.bounds.hi - shapes.bounds.lo;
   shapes.bucket_mm = std::max(shapes.bucket_mm, extent.maxCoeff() / 256.0);
-  shapes.columns = static_cast<int>((shapes.bounds.hi.x() - shapes.bounds.lo.x()) / shapes.bucket_mm) + 1;
-  shapes.rows = static_cast<int>((shapes.bounds.hi.y() - shapes.bounds.lo.y()) / shapes.bucket_mm) + 1;
+  shapes.columns =
+      static_cast<int>((shapes.bounds.hi.x() - shapes.bounds.lo.x()) / shapes.bucket_mm) + 1;
+  shapes.rows =
+      static_cast<int>((shapes.bounds.hi.y() - shapes.bounds.lo.y()) / shapes.bucket_mm) + 1;
   shapes.buckets.resize(static_cast<std::size_t>(shapes.columns) * shapes.rows);
   for (int t = 0; t < static_cast<int>(shapes.triangles.size()); ++t) {
     const auto [c0, r0] = shapes.bucket(shapes.triangle_boxes[t].lo);

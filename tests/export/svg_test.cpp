@@ -209,14 +209,15 @@ TEST(ExportSvg, NoSegmentPrintsWithZeroLength) {
   PatternLayout layout;
   layout.pages.resize(1);
   PlacedPiece piece;
-  piece.folds.push_back({Vec2(19.15, 265.908), Vec2(19.1503, 265.9081), FoldKind::Mountain, 20.0,
-                         false});
+  piece.folds.push_back(
+      {Vec2(19.15, 265.908), Vec2(19.1503, 265.9081), FoldKind::Mountain, 20.0, false});
   piece.folds.push_back({Vec2(30, 10), Vec2(30, 50), FoldKind::Valley, 20.0, false});
   piece.cut_outline.push_back(
       {Vec2(0, 0), Vec2(40, 0), Vec2(40.0004, 0.0003), Vec2(40, 40), Vec2(0, 40), Vec2(0.0001, 0)});
   layout.pages[0].pieces.push_back(piece);
   const std::string svg = pattern_page_svg(layout, 0);
-  EXPECT_EQ(layer(svg, "mountain").find("<path"), std::string::npos) << "a fold 0.3 um long is drawn";
+  EXPECT_EQ(layer(svg, "mountain").find("<path"), std::string::npos)
+      << "a fold 0.3 um long is drawn";
   EXPECT_NE(layer(svg, "valley").find("M30,10 L30,50"), std::string::npos);
   EXPECT_NE(layer(svg, "cut").find("d=\"M0,0 L40,0 L40,40 L0,40 Z\""), std::string::npos)
       << layer(svg, "cut");

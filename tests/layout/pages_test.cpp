@@ -606,8 +606,8 @@ TEST(LayoutPages, CurvedStripIsSplitIntoPiecesThatFit) {
 // split strip printed as Na and Nb, a note saying so); with split_long_strips off it does not.
 // Four arcs of 270 degrees between radii r and r + 10 mm, at 1:1, laid out without and with
 // split_long_strips (each layout checked valid).
-std::pair<PatternLayout, PatternLayout> arcs_without_and_with_split(double r, int segments,
-                                                                    std::vector<FlatStrip>& strips) {
+std::pair<PatternLayout, PatternLayout> arcs_without_and_with_split(
+    double r, int segments, std::vector<FlatStrip>& strips) {
   for (int k = 0; k < 4; ++k) strips.push_back(arc_strip(k, r, r + 10, 270 * M_PI / 180, segments));
   LayoutOptions options;
   options.scale = 1;
@@ -713,9 +713,9 @@ TEST(LayoutPages, TabShrinksToFitAndIsDroppedWithoutRoom) {
 // wall that takes the tab takes it on its half at the notch's mouth, where there is room, and
 // the cut line runs along the rest of it.
 TEST(LayoutPages, BlockedWallTakesATabOnPartOfIt) {
-  const std::vector<Vec2> outline = {Vec2(0, 0),      Vec2(40, 0),  Vec2(40, 40),
-                                     Vec2(22, 40),    Vec2(20.3, 14), Vec2(21, 12),
-                                     Vec2(20, 10),    Vec2(18, 40), Vec2(0, 40)};
+  const std::vector<Vec2> outline = {Vec2(0, 0),   Vec2(40, 0),    Vec2(40, 40),
+                                     Vec2(22, 40), Vec2(20.3, 14), Vec2(21, 12),
+                                     Vec2(20, 10), Vec2(18, 40),   Vec2(0, 40)};
   const std::vector<Triangle> triangles = {{1, 2, 3}, {1, 3, 4}, {1, 4, 5}, {1, 5, 6},
                                            {0, 1, 6}, {0, 6, 7}, {0, 7, 8}};
   // The first piece as drawn; the second its mirror image, the same surface seen from the other
@@ -817,9 +817,8 @@ TEST(LayoutPages, LabelInANarrowSlotGetsALeaderLine) {
     return std::abs(m.y() - 1.5) < 1e-9 && std::abs(m.x() - 2.25) < 1e-9;
   });
   FlatStrip block = cell_strip(1, 4, 4, 5.0, 5.0);
-  mark_seam(block, "S12", 0, [](const Vec2& m) {
-    return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9;
-  });
+  mark_seam(block, "S12", 0,
+            [](const Vec2& m) { return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9; });
   // The block's seam edge must be as long as the comb's: 1.5 mm, from x = 1.75 to 3.25.
   for (Vec2& v : block.vertices2d)
     if (std::abs(v.y()) < 1e-9 && (std::abs(v.x() - 0.0) < 1e-9 || std::abs(v.x() - 5.0) < 1e-9))
@@ -853,9 +852,11 @@ TEST(LayoutPages, LabelInANarrowSlotGetsALeaderLine) {
       EXPECT_LT((label.leader.front() - seam_middle).norm(), 1e-6);
       // It runs out of the slot on no piece, and ends at the text, clear of it.
       for (int k = 1; k <= 20; ++k) {
-        const Vec2 point = label.leader.front() + (k / 20.0) * (label.leader.back() - label.leader.front());
+        const Vec2 point =
+            label.leader.front() + (k / 20.0) * (label.leader.back() - label.leader.front());
         for (const PlacedPiece& other : page.pieces)
-          EXPECT_FALSE(on_piece(point, other) && k > 1) << "leader crosses strip " << other.strip_id;
+          EXPECT_FALSE(on_piece(point, other) && k > 1)
+              << "leader crosses strip " << other.strip_id;
       }
       const auto box = label_box(label);
       const double to_text = (label.leader.back() - label.position).norm();
@@ -880,9 +881,8 @@ TEST(LayoutPages, LabelInABentSlotGetsALeaderThatBends) {
     return std::abs(m.y() - 1.5) < 1e-9 && std::abs(m.x() - 2.25) < 1e-9;
   });
   FlatStrip block = cell_strip(1, 4, 4, 5.0, 5.0);
-  mark_seam(block, "S12", 0, [](const Vec2& m) {
-    return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9;
-  });
+  mark_seam(block, "S12", 0,
+            [](const Vec2& m) { return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9; });
   for (Vec2& v : block.vertices2d)
     if (std::abs(v.y()) < 1e-9 && (std::abs(v.x() - 0.0) < 1e-9 || std::abs(v.x() - 5.0) < 1e-9))
       v.x() = v.x() < 1 ? 1.75 : 3.25;

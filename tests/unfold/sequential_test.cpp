@@ -237,8 +237,9 @@ TEST(UnfoldSequential, FanFromItsOwnCornerLeavesNoEmptyTriangle) {
   expect_isometric(flat[0]);
   double area = 0;
   for (const Triangle& t : flat[0].triangles) {
-    const double twice = unfold_testing::cross2(flat[0].vertices2d[t[1]] - flat[0].vertices2d[t[0]],
-                                                flat[0].vertices2d[t[2]] - flat[0].vertices2d[t[0]]);
+    const double twice =
+        unfold_testing::cross2(flat[0].vertices2d[t[1]] - flat[0].vertices2d[t[0]],
+                               flat[0].vertices2d[t[2]] - flat[0].vertices2d[t[0]]);
     EXPECT_GT(twice, 1.0);
     area += 0.5 * twice;
   }
@@ -246,8 +247,7 @@ TEST(UnfoldSequential, FanFromItsOwnCornerLeavesNoEmptyTriangle) {
   for (const BoundaryEdge& e : flat[0].boundary)
     EXPECT_GT((flat[0].vertices2d[e.v1] - flat[0].vertices2d[e.v0]).norm(), 1.0);
   // The same fan with its apex at the corner but one copy of it moved off (a real fan): kept.
-  const auto real = unfold_strip(
-      unfold_testing::fan_strip(square, Vec3(0, 0, 0.5), true), 0, 0);
+  const auto real = unfold_strip(unfold_testing::fan_strip(square, Vec3(0, 0, 0.5), true), 0, 0);
   std::size_t triangles = 0;
   for (const FlatStrip& s : real) triangles += s.triangles.size();
   EXPECT_EQ(triangles, 4u);
