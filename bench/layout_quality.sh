@@ -4,8 +4,8 @@
 # layout.rectangles (MaxRects, the packer before), everything else the same. Prints per mesh
 # the pages of each, the mean fill of every page but the last, seams without a tab (nor a
 # joining strip), the smallest text, the overlapping texts and the joining strips (report.json
-# "layout"), the layout node's seconds; then the totals and the five meshes whose page count
-# fell the most.
+# "layout"), the layout node's seconds, the segments its SVG pages print with zero length; then
+# the totals and the five meshes whose page count fell the most.
 #
 #   bench/layout_quality.sh                               # all meshes, 2%, 200 mm
 #   bench/layout_quality.sh --tolerance 5% a.off b.off
@@ -77,8 +77,16 @@ for mesh in "${meshes[@]}"; do
   rect_report=$work/rect/$name/report.json
   [[ ${#variants[@]} -eq 2 ]] || rect_report=-
   python3 - "$work/nest/$name/report.json" "$rect_report" "$name" >>"$rows" <<'PY'
-import json, sys
+import glob, json, os, re, sys
 n = json.load(open(sys.argv[1]))
+# Segments that print with zero length (a point repeated, as the SVG writes it) in any path.
+zero = 0
+for svg in glob.glob(os.path.join(os.path.dirname(sys.argv[1]), "pattern-*.svg")):
+    for d in re.findall(r' d="([^"]*)"', open(svg).read()):
+        previous = None
+        for command, point in re.findall(r'([MLZ])\s*([-\d.e]+,[-\d.e]+)?', d):
+            if command == "L" and point == previous: zero += 1
+            previous = point if command in "ML" else None
 r = json.load(open(sys.argv[2])) if sys.argv[2] != "-" else {
     "layout": {"pages": n["layout"]["rectangle_pages"], "page_fill": [float("nan")] * 2},
     "timing": {"nodes": {"layout": {"seconds": float("nan")}}}}
@@ -89,14 +97,15 @@ def fill(l):
 print("\t".join(str(x) for x in [sys.argv[3], ln["pages"], lr["pages"], f"{fill(ln):.3f}", f"{fill(lr):.3f}",
       ln["seams"], ln["seams_without_tab"], ln["smallest_text_mm"], ln["overlapping_text"],
       ln.get("joining_strips", 0),
-      f'{n["timing"]["nodes"]["layout"]["seconds"]:.3f}', f'{r["timing"]["nodes"]["layout"]["seconds"]:.3f}']))
+      f'{n["timing"]["nodes"]["layout"]["seconds"]:.3f}', f'{r["timing"]["nodes"]["layout"]["seconds"]:.3f}',
+      zero]))
 PY
 done
 python3 - "$rows" <<'PY'
 import sys, math
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
-print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | joining strips | layout s nest | layout s rect |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | joining strips | layout s nest | layout s rect | zero-length segments |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 for r in rows: print("| " + " | ".join(r) + " |")
 pn = sum(int(r[1]) for r in rows); pr = sum(int(r[2]) for r in rows)
 def mean(i):
@@ -108,7 +117,8 @@ print(f"{len(rows)} meshes: pages {pn} nested vs {pr} rectangles ({pn / max(pr, 
       f"{sum(int(r[6]) for r in rows)} of {sum(int(r[5]) for r in rows)}; smallest text "
       f"{min(float(r[7]) for r in rows):.2f} mm; overlapping texts {sum(int(r[8]) for r in rows)}; "
       f"joining strips {sum(int(r[9]) for r in rows)}; "
-      f"layout seconds {sum(float(r[10]) for r in rows):.1f} vs {sum(float(r[11]) for r in rows):.1f}")
+      f"layout seconds {sum(float(r[10]) for r in rows):.1f} vs {sum(float(r[11]) for r in rows):.1f}; "
+      f"segments printed with zero length {sum(int(r[12]) for r in rows)}")
 drop = sorted(rows, key=lambda r: int(r[1]) - int(r[2]))[:5]
 print("largest page drops: " + ", ".join(f"{r[0]} {r[2]} -> {r[1]}" for r in drop))
 PY
