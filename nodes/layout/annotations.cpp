@@ -761,12 +761,18 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (starts.empty()) continue;
       std::array<Vec2, 4> found;
+      Vec2 found_direction;
+      // Along the seam, else across it (still read from one side, where a slot is too narrow).
       auto box_ok = [&](const Vec2& centre, int k) {
-        const auto candidate = text_box(centre, alongs[k], smallest, label.text.size());
-        if (inside_convex(starts[k], candidate)) return false;
-        if (!(outside ? fits_outside(candidate) : fits(candidate))) return false;
-        found = candidate;
-        return true;
+        for (const Vec2& direction : {alongs[k], Vec2(-alongs[k].y(), alongs[k].x())}) {
+          const auto candidate = text_box(centre, direction, smallest, label.text.size());
+          if (inside_convex(starts[k], candidate)) continue;
+          if (!(outside ? fits_outside(candidate) : fits(candidate))) continue;
+          found = candidate;
+          found_direction = direction;
+          return true;
+        }
+        return false;
       };
       auto [path, k] = router.route(starts, 40.0, taken, box_ok);
       if (path.empty()) continue;
@@ -798,7 +804,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       else
         leader.insert(leader.begin(), origins[k]);
       label.position = 0.25 * (found[0] + found[1] + found[2] + found[3]);
-      label.direction = alongs[k];
+      label.direction = found_direction;
       label.size = smallest;
       label.outside = outside;
       label.leader = leader;
