@@ -115,6 +115,8 @@ void validate_options(const LayoutOptions& o) {
     throw InvalidInputException("layout option tab_angle_degrees must be in (0, 90]");
   if (!(o.scale > 0) && !(o.height_mm > 0))
     throw InvalidInputException("layout needs height_mm > 0 or scale > 0");
+  if (o.splits_per_page < 1)
+    throw InvalidInputException("layout option splits_per_page must be >= 1");
 }
 
 // Room kept around a piece for its tabs while splitting: a flap stays within its height of
@@ -523,7 +525,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   if (layout.pages.size() < 2 || whole.found + whole.oversize == 0) return layout;
   // The strips that fit split, then also those larger than the page (split only to fit it
   // their parts would stay long and bent): each kept where every page it saves against the
-  // best so far costs at most three more strips split.
+  // best so far costs at most splits_per_page more strips split.
   PatternLayout best = std::move(layout);
   const std::size_t unsplit_pages = best.pages.size();
   int best_split = 0;
@@ -532,7 +534,9 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
     LongStrips parts;
     PatternLayout halves = layout_with(strips, options, mode, &parts);
     const int saved = static_cast<int>(best.pages.size()) - static_cast<int>(halves.pages.size());
-    if (parts.split == 0 || saved <= 0 || parts.split - best_split > 3 * saved) continue;
+    if (parts.split == 0 || saved <= 0 ||
+        parts.split - best_split > options.splits_per_page * saved)
+      continue;
     best = std::move(halves);
     best_split = parts.split;
   }

@@ -84,6 +84,11 @@ ParamTable<O> layout_table(bool nesting) {
             "split_long_strips", [](O & o) -> auto& { return o.split_long_strips; },
             "lay out again with long thin strips split in parts of half a page; kept where "
             "that needs fewer pages")
+        .add(
+            "splits_per_page", [](O & o) -> auto& { return o.splits_per_page; },
+            "more strips split in half pages that one page saved is worth (more: less paper, "
+            "more pieces)",
+            at_least(1))
         .choice(
             "packing", [](O & o) -> auto& { return o.packing; },
             std::vector<std::pair<std::string, PackingMethod>>{

@@ -639,6 +639,25 @@ TEST(LayoutPages, LongThinStripsAreSplitWhereThatSavesPages) {
 
 // Arcs larger than the page: split only to fit it, each part is still a wide bend that packs
 // alone; in parts of half a page they pack together.
+// splits_per_page bounds what a page saved may cost: the four arcs above save pages only by
+// splitting all four, more than one per page saved, so with splits_per_page 1 they stay whole.
+TEST(LayoutPages, SplitsPerPageBoundsTheStripsSplitForAPageSaved) {
+  std::vector<FlatStrip> strips;
+  const auto [whole, split] = arcs_without_and_with_split(80, 60, strips);
+  const int saved = static_cast<int>(whole.pages.size() - split.pages.size());
+  ASSERT_GT(saved, 0);
+  ASSERT_LT(saved, 4);
+  LayoutOptions options;
+  options.scale = 1;
+  options.splits_per_page = 1;
+  const PatternLayout strict = layout_pages(strips, options);
+  expect_valid_layout(strict, strips, options);
+  EXPECT_EQ(strict.pages.size(), whole.pages.size());
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(pieces_of(strict, k).size(), 1u) << "strip " << k;
+  options.splits_per_page = 0;
+  EXPECT_THROW(layout_pages(strips, options), InvalidInputException);
+}
+
 TEST(LayoutPages, LongThinStripsLargerThanThePageAreSplitInHalfPagesWhereThatSavesPages) {
   std::vector<FlatStrip> strips;  // four C shapes 320 mm across
   const auto [page_parts, half_parts] = arcs_without_and_with_split(150, 90, strips);
