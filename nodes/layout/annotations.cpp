@@ -186,6 +186,34 @@ bool segments_cross(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) 
   return ((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0));
 }
 
+// The middle of the outer edge of a flap of the tab `label` carries on this piece, that edge's
+// direction and its normal pointing away from the tab: where a leader leaves a seam walled in
+// by its own tab.
+struct TabEdge {
+  Vec2 middle, along, outward;
+};
+std::vector<TabEdge> outer_tab_edges(const Piece& piece, const std::string& label) {
+  std::vector<TabEdge> edges;
+  for (const PieceTab& tab : piece.tabs) {
+    if (tab.label != label) continue;
+    for (int f : tab.flaps) {
+      const Flap& flap = piece.flaps[f];
+      if (flap.base.size() < 2 || flap.outer.size() < 2) continue;
+      const std::size_t i = (flap.outer.size() - 1) / 2;
+      const Vec2 a = flap.outer[i], b = flap.outer[i + 1];
+      if ((b - a).norm() < 1e-9) continue;
+      const Vec2 along = (b - a).normalized();
+      Vec2 outward(along.y(), -along.x());
+      Vec2 inside = Vec2::Zero();
+      for (const Vec2& q : flap.base) inside += q;
+      inside /= static_cast<double>(flap.base.size());
+      if (outward.dot(inside - a) > 0) outward = -outward;
+      edges.push_back({0.5 * (a + b), along, outward});
+    }
+  }
+  return edges;
+}
+
 // True when q lies in the convex quad (on its edges included).
 bool inside_convex(const Vec2& q, const std::array<Vec2, 4>& box) {
   bool positive = false, negative = false;
@@ -651,22 +679,10 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     }
     // From the middle of the outer edge of the seam's tab on this side: the seam itself is
     // walled in by its tab, but the tab names its seam as well.
-    for (const PieceTab& tab : piece.tabs) {
-      if (placed || tab.label != label.text) continue;
-      for (int f : tab.flaps) {
-        const Flap& flap = piece.flaps[f];
-        if (placed || flap.base.size() < 2 || flap.outer.size() < 2) continue;
-        const std::size_t i = (flap.outer.size() - 1) / 2;
-        const Vec2 a = flap.outer[i], b = flap.outer[i + 1];
-        if ((b - a).norm() < 1e-9) continue;
-        const Vec2 along = (b - a).normalized();
-        Vec2 outward(along.y(), -along.x());
-        Vec2 inside = Vec2::Zero();
-        for (const Vec2& q : flap.base) inside += q;
-        inside /= static_cast<double>(flap.base.size());
-        if (outward.dot(inside - a) > 0) outward = -outward;
-        placed = leader_outside(0.5 * (a + b), along, outward);
-      }
+    const std::vector<TabEdge> tab_edges = outer_tab_edges(piece, label.text);
+    for (const TabEdge& edge : tab_edges) {
+      if (placed) break;
+      placed = leader_outside(edge.middle, edge.along, edge.outward);
     }
     // On the piece farther in, with a leader line from the seam: a seam round a small hole or
     // in a crowded corner has no room next to it, but the paper around it often has. The line
@@ -740,24 +756,11 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         alongs.push_back(along);
         origins.push_back(at);
       }
-      for (const PieceTab& tab : piece.tabs) {
-        if (!outside || tab.label != label.text) continue;
-        for (int f : tab.flaps) {
-          const Flap& flap = piece.flaps[f];
-          if (flap.base.size() < 2 || flap.outer.size() < 2) continue;
-          const std::size_t i = (flap.outer.size() - 1) / 2;
-          const Vec2 a = flap.outer[i], b = flap.outer[i + 1];
-          if ((b - a).norm() < 1e-9) continue;
-          const Vec2 along = (b - a).normalized();
-          Vec2 outward(along.y(), -along.x());
-          Vec2 inside = Vec2::Zero();
-          for (const Vec2& q : flap.base) inside += q;
-          inside /= static_cast<double>(flap.base.size());
-          if (outward.dot(inside - a) > 0) outward = -outward;
-          starts.push_back(0.5 * (a + b) + 0.4 * outward);
-          alongs.push_back(along);
-          origins.push_back(0.5 * (a + b));
-        }
+      for (const TabEdge& edge : tab_edges) {
+        if (!outside) break;
+        starts.push_back(edge.middle + 0.4 * edge.outward);
+        alongs.push_back(edge.along);
+        origins.push_back(edge.middle);
       }
       if (starts.empty()) continue;
       std::array<Vec2, 4> found;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -830,21 +831,29 @@ TEST(LayoutPages, LabelsWithoutRoomOnTheirPieceArePrintedBesideIt) {
 // 1.5 mm wide too: no room for its label on the piece, on a tab or beside the seam, so it is
 // printed beyond the slot with a leader line from the seam's middle that touches no piece and
 // no other text.
-TEST(LayoutPages, LabelInANarrowSlotGetsALeaderLine) {
-  FlatStrip comb = cell_strip(0, 3, 14, 1.5, 1.5, [](int i, int j) { return i != 1 || j == 0; });
+// A comb of 1.5 mm cells (nx by 14, the cells where keep(i, j)) whose seam S12 is the edge
+// from (1.5, 1.5) to (3, 1.5), at the bottom of a slot in column 1; and a 20 mm block glued to
+// it there (its seam edge shortened to the same 1.5 mm).
+std::vector<FlatStrip> slot_and_block(int nx, const std::function<bool(int, int)>& keep) {
+  FlatStrip comb = cell_strip(0, nx, 14, 1.5, 1.5, keep);
   mark_seam(comb, "S12", 1, [](const Vec2& m) {
     return std::abs(m.y() - 1.5) < 1e-9 && std::abs(m.x() - 2.25) < 1e-9;
   });
   FlatStrip block = cell_strip(1, 4, 4, 5.0, 5.0);
   mark_seam(block, "S12", 0,
             [](const Vec2& m) { return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9; });
-  // The block's seam edge must be as long as the comb's: 1.5 mm, from x = 1.75 to 3.25.
   for (Vec2& v : block.vertices2d)
     if (std::abs(v.y()) < 1e-9 && (std::abs(v.x() - 0.0) < 1e-9 || std::abs(v.x() - 5.0) < 1e-9))
       v.x() = v.x() < 1 ? 1.75 : 3.25;
   for (std::size_t i = 0; i < block.vertices2d.size(); ++i)
     block.vertices3d[i] = Vec3(block.vertices2d[i].x(), block.vertices2d[i].y(), 0.0);
-  const std::vector<FlatStrip> strips{comb, block};
+  return {comb, block};
+}
+
+TEST(LayoutPages, LabelInANarrowSlotGetsALeaderLine) {
+  const std::vector<FlatStrip> strips =
+      slot_and_block(3, [](int i, int j) { return i != 1 || j == 0; });
+  const FlatStrip& comb = strips[0];
   LayoutOptions options;
   options.scale = 1;
   options.tab_width_mm = 0;  // no tab to carry the label
@@ -895,19 +904,8 @@ TEST(LayoutPages, LabelInABentSlotGetsALeaderThatBends) {
   auto slot = [](int i, int j) {
     return (i == 1 && j >= 1 && j <= 10) || (j == 10 && i >= 1 && i <= 3) || (i == 3 && j >= 10);
   };
-  FlatStrip comb = cell_strip(0, 5, 14, 1.5, 1.5, [&](int i, int j) { return !slot(i, j); });
-  mark_seam(comb, "S12", 1, [](const Vec2& m) {
-    return std::abs(m.y() - 1.5) < 1e-9 && std::abs(m.x() - 2.25) < 1e-9;
-  });
-  FlatStrip block = cell_strip(1, 4, 4, 5.0, 5.0);
-  mark_seam(block, "S12", 0,
-            [](const Vec2& m) { return std::abs(m.y()) < 1e-9 && std::abs(m.x() - 2.5) < 1e-9; });
-  for (Vec2& v : block.vertices2d)
-    if (std::abs(v.y()) < 1e-9 && (std::abs(v.x() - 0.0) < 1e-9 || std::abs(v.x() - 5.0) < 1e-9))
-      v.x() = v.x() < 1 ? 1.75 : 3.25;
-  for (std::size_t i = 0; i < block.vertices2d.size(); ++i)
-    block.vertices3d[i] = Vec3(block.vertices2d[i].x(), block.vertices2d[i].y(), 0.0);
-  const std::vector<FlatStrip> strips{comb, block};
+  const std::vector<FlatStrip> strips =
+      slot_and_block(5, [&](int i, int j) { return !slot(i, j); });
   LayoutOptions options;
   options.scale = 1;
   options.tab_width_mm = 0;
