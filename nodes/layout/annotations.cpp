@@ -722,8 +722,9 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       std::stable_sort(centres.begin(), centres.end(),
                        [](const auto& x, const auto& y) { return x.first < y.first; });
       std::vector<const Anchor*> order;
-      for (const auto& [distance, centre] : centres) {
+      for (const auto& spot : centres) {
         if (placed) break;
+        const Vec2& centre = spot.second;  // a lambda below takes it (no structured binding)
         order.clear();
         for (const Anchor& a : anchors) order.push_back(&a);
         std::stable_sort(order.begin(), order.end(), [&](const Anchor* x, const Anchor* y) {
