@@ -401,13 +401,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
   }
   auto fits_outside = [&](const std::array<Vec2, 4>& candidate) {
     if (!clear(candidate)) return false;
-    Box2 around;
-    for (const Vec2& q : candidate) around.add(q);
-    bool hit = false;
-    shapes.near(around, [&](int t) {
-      hit = hit || convex_overlap(candidate.data(), 4, shapes.triangles[t].data(), 3, 0.0);
-    });
-    if (hit) return false;
+    if (overlaps_triangles(candidate.data(), 4, shapes, 0.0)) return false;
     for (const auto& flap : flaps) {
       for (std::size_t i = 0; i < flap.size(); ++i)
         if (segment_crosses(flap[i], flap[(i + 1) % flap.size()], candidate)) return false;
@@ -602,9 +596,6 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (placed) break;
     }
-    // A leader line from `anchor` to a text box at `radius` (in order) along a ray turned 0,
-    // +10, -10, +20, ... degrees (to +-170) from `normal`: the box must pass `box_ok`, the line
-    // (stopping short of the box) must cross no cut line and no text, and pass `line_ok`.
     // The text at `centre` (running along `along`, smallest size) with a leader line from
     // `anchor`: the box `candidate` passed its test already; the line (stopping short of the
     // box) must cross no cut line and no text, and pass `line_ok`.
@@ -647,14 +638,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     };
     // A leader that runs off the piece: it touches no triangle and ends outside every tab.
     auto off_piece = [&](const Vec2& start, const Vec2& end) {
-      const auto thin = leader_box({start, end});
-      Box2 around;
-      for (const Vec2& q : thin) around.add(q);
-      bool hit = false;
-      shapes.near(around, [&](int t) {
-        hit = hit || convex_overlap(thin.data(), 4, shapes.triangles[t].data(), 3, 0.01);
-      });
-      if (hit) return false;
+      if (overlaps_triangles(leader_box({start, end}).data(), 4, shapes, 0.01)) return false;
       for (const auto& flap : flaps)
         if (point_in_polygon(start, flap) || point_in_polygon(end, flap)) return false;
       return true;
@@ -765,7 +749,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       }
       if (starts.empty()) continue;
       std::array<Vec2, 4> found;
-      Vec2 found_direction;
+      Vec2 found_centre, found_direction;
       // Along the seam, else across it (still read from one side, where a slot is too narrow).
       auto box_ok = [&](const Vec2& centre, int k) {
         for (const Vec2& direction : {alongs[k], Vec2(-alongs[k].y(), alongs[k].x())}) {
@@ -773,6 +757,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
           if (inside_convex(starts[k], candidate)) continue;
           if (!(outside ? fits_outside(candidate) : fits(candidate))) continue;
           found = candidate;
+          found_centre = centre;
           found_direction = direction;
           return true;
         }
@@ -800,14 +785,13 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         break;
       }
       if (leader.size() < 2 || (leader.back() - leader[leader.size() - 2]).norm() < 0.1) continue;
-      // The seam's point the leader starts from: the start moved back onto the seam.
       // It starts on the seam or the tab's edge: the start moved back onto it (or joined to it,
       // where the first segment would not stay clear from there).
       if (router.clear(origins[k], leader[1], taken))
         leader.front() = origins[k];
       else
         leader.insert(leader.begin(), origins[k]);
-      label.position = 0.25 * (found[0] + found[1] + found[2] + found[3]);
+      label.position = found_centre;
       label.direction = found_direction;
       label.size = smallest;
       label.outside = outside;

@@ -58,18 +58,24 @@ PieceShapes piece_shapes(const StripData& data, const Piece& piece) {
   return shapes;
 }
 
+bool overlaps_triangles(const Vec2* polygon, int n, const PieceShapes& shapes, double depth) {
+  Box2 box;
+  for (int i = 0; i < n; ++i) box.add(polygon[i]);
+  bool hit = false;
+  shapes.near(box, [&](int t) {
+    hit = hit || (box.overlaps(shapes.triangle_boxes[t]) &&
+                  convex_overlap(polygon, n, shapes.triangles[t].data(), 3, depth));
+  });
+  return hit;
+}
+
 bool slices_collide(const std::vector<std::vector<Vec2>>& slices, const PieceShapes& shapes,
                     double depth) {
   for (const auto& slice : slices) {
     Box2 box;
     for (const Vec2& c : slice) box.add(c);
     const int n = static_cast<int>(slice.size());
-    bool hit = false;
-    shapes.near(box, [&](int t) {
-      hit = hit || (box.overlaps(shapes.triangle_boxes[t]) &&
-                    convex_overlap(slice.data(), n, shapes.triangles[t].data(), 3, depth));
-    });
-    if (hit) return true;
+    if (overlaps_triangles(slice.data(), n, shapes, depth)) return true;
     for (std::size_t q = 0; q < shapes.slices.size(); ++q)
       if (box.overlaps(shapes.slice_boxes[q]) &&
           convex_overlap(slice.data(), n, shapes.slices[q].data(),

@@ -48,6 +48,10 @@ struct PieceShapes {
 /// The triangles of `piece` (no slices yet).
 PieceShapes piece_shapes(const StripData& data, const Piece& piece);
 
+/// True when the convex polygon (n corners) overlaps a triangle of the piece deeper than
+/// `depth` (convex_overlap), testing only the triangles near it.
+bool overlaps_triangles(const Vec2* polygon, int n, const PieceShapes& shapes, double depth);
+
 /// True when a convex slice overlaps a triangle or an accepted slice deeper than `depth`.
 bool slices_collide(const std::vector<std::vector<Vec2>>& slices, const PieceShapes& shapes,
                     double depth);
