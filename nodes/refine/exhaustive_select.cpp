@@ -8,6 +8,7 @@
 
 #include "core/bvh.h"
 #include "core/errors.h"
+#include "nodes/ruled/part_strip.h"
 
 namespace papercraft {
 namespace {
@@ -35,9 +36,10 @@ std::vector<ScoredSelection> score(const Mesh& part, std::vector<BoundarySelecti
   std::vector<ScoredSelection> scores(selections.size());
   tbb::parallel_for(std::size_t{0}, selections.size(), [&](std::size_t k) {
     BoundarySelection& selection = selections[k];
-    RuledStrip strip = twist_minimizing_strip(
-        selection_polyline(part, selection.first, selection.first_closed),
-        selection_polyline(part, selection.second, selection.second_closed), options.twist);
+    RuledStrip strip = part_strip(
+        part, selection.first, selection_polyline(part, selection.first, selection.first_closed),
+        selection.second, selection_polyline(part, selection.second, selection.second_closed),
+        options.twist);
     HausdorffResult result;
     if (options.decide.sampled) {
       result = sampled_hausdorff_distance(part_tree.mesh(), strip.mesh, options.decide.sampling);

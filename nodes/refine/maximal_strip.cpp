@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "nodes/ruled/part_strip.h"
 #include "nodes/select/geodesic.h"
 
 namespace papercraft {
@@ -55,15 +56,12 @@ Probe probe(const Mesh& part, const std::vector<Mesh>& pieces, const std::vector
   }
   if (cut_loop.empty() || (side_closed && side_loop.empty())) return {};
   const Polyline cut_polyline = selection_polyline(*piece, cut_loop, true);
-  Polyline side_polyline;
-  if (side_closed) {
-    side_polyline = selection_polyline(*piece, side_loop, true);
-  } else {
-    side_polyline = selection_polyline(*piece, {vertex_at(*piece, anchor)}, false);
-  }
-  const RuledStrip strip = side_closed
-                               ? twist_minimizing_strip(side_polyline, cut_polyline, options.twist)
-                               : twist_minimizing_strip(cut_polyline, side_polyline, options.twist);
+  if (!side_closed) side_loop = {vertex_at(*piece, anchor)};
+  const Polyline side_polyline = selection_polyline(*piece, side_loop, side_closed);
+  const RuledStrip strip =
+      side_closed
+          ? part_strip(*piece, side_loop, side_polyline, cut_loop, cut_polyline, options.twist)
+          : part_strip(*piece, cut_loop, cut_polyline, side_loop, side_polyline, options.twist);
   if (strip.mesh.empty()) return {};
   const HausdorffResult result =
       decide_within(to_triangle_mesh(*piece), strip.mesh, tolerance, options.decide);

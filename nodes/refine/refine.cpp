@@ -6,9 +6,11 @@
 #include <exception>
 #include <sstream>
 #include <utility>
+#include <vector>
 
 #include "core/errors.h"
 #include "nodes/refine/exhaustive_select.h"
+#include "nodes/ruled/part_strip.h"
 
 namespace papercraft {
 
@@ -44,8 +46,10 @@ StripBoundaries select_strip_boundaries(const Mesh& part, double tolerance,
   return boundaries;
 }
 
-RuledStrip build_strip(const StripBoundaries& boundaries, const RefineOptions& options) {
-  return twist_minimizing_strip(boundaries.a, boundaries.b, options.twist);
+RuledStrip build_strip(const Mesh& part, const StripBoundaries& boundaries,
+                       const RefineOptions& options) {
+  return part_strip(part, boundaries.first, boundaries.a, boundaries.second, boundaries.b,
+                    options.twist);
 }
 
 StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
@@ -108,7 +112,7 @@ bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions&
     Pending item = std::move(stack.back());
     stack.pop_back();
     StripBoundaries boundaries = select_strip_boundaries(item.piece, tolerance, options);
-    RuledStrip strip = build_strip(boundaries, options);
+    RuledStrip strip = build_strip(item.piece, boundaries, options);
     StripVerdict verdict = decide_strip(item.piece, boundaries, strip, tolerance, options);
     if (verdict.accept) {
       if (!accept(std::move(item), std::move(boundaries), std::move(strip), verdict)) return false;

@@ -67,8 +67,10 @@ struct StripBoundaries {
 StripBoundaries select_strip_boundaries(const Mesh& part, double tolerance,
                                         const RefineOptions& options);
 
-/// Step 2: the strip from boundary a to boundary b.
-RuledStrip build_strip(const StripBoundaries& boundaries, const RefineOptions& options);
+/// Step 2: the strip from boundary a to boundary b, its triangles facing the way `part`'s do
+/// (judged on the part's boundary edges the strip shares; boundaries are `part`'s).
+RuledStrip build_strip(const Mesh& part, const StripBoundaries& boundaries,
+                       const RefineOptions& options);
 
 /// Step 3.
 StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,

@@ -558,8 +558,8 @@ RuledStrip closed_strip(const Polyline& a, const Polyline& b, const TwistOptions
   const int n = strip.a_count;
   const int m = strip.b_count;
   const double weight = length_weight(a, b, options);
-  CyclicCandidate best = cyclic_candidate(a, b, false, weight, options);
-  if (options.try_reversed_b) {
+  CyclicCandidate best = cyclic_candidate(a, b, options.b_direction < 0, weight, options);
+  if (options.b_direction == 0 && options.try_reversed_b) {
     CyclicCandidate reversed = cyclic_candidate(a, b, true, weight, options);
     if (reversed.cost < best.cost) best = std::move(reversed);
   }

@@ -28,6 +28,11 @@ struct TwistOptions {
   /// Closed-closed only: also match B traversed backwards and keep the cheaper strip (the
   /// two boundary loops of a part come in opposite orientations).
   bool try_reversed_b = true;
+  /// Closed-closed only: match B only as given (+1) or only backwards (-1), whatever the
+  /// cost; 0 leaves the choice to try_reversed_b. Only one of the two makes a strip that
+  /// faces one way all over, as the part between two of its boundary loops does: the caller
+  /// who knows the part picks it (build_strip, nodes/refine/refine.h).
+  int b_direction = 0;
   /// Closed-closed only: when the optimum is a double fan (see below), the best path that is
   /// not one is searched for every start if (n + 1)(m + 1) min(n, m) is at most this (exact),
   /// else by the divide and conquer (not proven optimal for this restricted problem).

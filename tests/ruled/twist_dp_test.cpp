@@ -420,6 +420,24 @@ TEST(TwistDp, WithoutReversalOnlyTheGivenDirectionIsUsed) {
   EXPECT_LT(free.twist_cost, forced.twist_cost);
 }
 
+TEST(TwistDp, BDirectionForcesOneTraversalWhateverItCosts) {
+  const Polyline a = circle(10, 1.0, 0.0);
+  const Polyline b = circle(10, 1.0, 1.0, 0.0, /*clockwise=*/true);
+  TwistOptions options;
+  options.b_direction = 1;  // as given, though backwards twists less
+  const RuledStrip given = twist_minimizing_strip(a, b, options);
+  EXPECT_FALSE(b_matched_backwards(given));
+  options.b_direction = -1;
+  const RuledStrip backwards = twist_minimizing_strip(a, b, options);
+  EXPECT_TRUE(b_matched_backwards(backwards));
+  EXPECT_LT(backwards.twist_cost, given.twist_cost);
+  // Backwards forced on a B given the cheap way round: the dearer strip.
+  const Polyline b_ccw = circle(10, 1.0, 1.0);
+  EXPECT_TRUE(b_matched_backwards(twist_minimizing_strip(a, b_ccw, options)));
+  EXPECT_GT(twist_minimizing_strip(a, b_ccw, options).twist_cost,
+            twist_minimizing_strip(a, b_ccw).twist_cost);
+}
+
 TEST(TwistDp, OpenOpenTriangleCountAndOrientation) {
   std::mt19937 rng(99);
   for (const auto& [n, m] : std::vector<std::pair<int, int>>{{2, 2}, {2, 6}, {8, 3}, {15, 15}}) {
