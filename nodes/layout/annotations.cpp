@@ -477,24 +477,49 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
                              piece.number->text.size()));
     warnings.push_back("piece " + piece.name + ": no room for its number clear of the cut line");
   }
-  for (PieceLabel& label : piece.labels) {
+  // A point `at` mm along `chain` (and the direction of its edge there).
+  auto chain_point = [&](const Chain& chain, double at, Vec2* direction) -> std::optional<Vec2> {
+    const auto& loop = piece.loops[chain.loop];
+    double walked = 0;
+    for (int i = 0; i < chain.count; ++i) {
+      const PieceEdge& e = loop[(chain.start + i) % loop.size()];
+      const Vec2 a = data.points[e.v0], b = data.points[e.v1];
+      const double length = (b - a).norm();
+      if (length <= 0) continue;
+      if (walked + length >= at || i == chain.count - 1) {
+        *direction = (b - a) / length;
+        return Vec2(a + std::clamp((at - walked) / length, 0.0, 1.0) * (b - a));
+      }
+      walked += length;
+    }
+    return std::nullopt;
+  };
+  // The two sides of a seam of the piece with itself that run side by side from a common
+  // corner, no farther apart than kSlitWidth anywhere: a slit (a cone opened along a ruling).
+  // One label at a slit names both its sides.
+  constexpr double kSlitWidth = 8.0;
+  auto slit = [&](const Chain& one, const Chain& other) {
+    const double length = chain_length(data, piece, one);
+    if (std::abs(length - chain_length(data, piece, other)) > 1e-6 * std::max(length, 1.0))
+      return false;
+    Vec2 direction;
+    for (double fraction : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+      const auto p = chain_point(one, fraction * length, &direction);
+      const auto q = chain_point(other, (1.0 - fraction) * length, &direction);
+      if (!p || !q || (*p - *q).norm() > kSlitWidth) return false;
+    }
+    return true;
+  };
+  std::vector<char> printed(piece.labels.size(), 1);
+  std::vector<char> clear_spot(piece.labels.size(), 1);
+  for (std::size_t n = 0; n < piece.labels.size(); ++n) {
+    PieceLabel& label = piece.labels[n];
     if (label.chain < 0) continue;
     const Chain& chain = chains[label.chain];
     const auto& loop = piece.loops[chain.loop];
     const double total = chain_length(data, piece, chain);
     auto point_at = [&](double at, Vec2* direction) {
-      double walked = 0;
-      for (int i = 0; i < chain.count; ++i) {
-        const PieceEdge& e = loop[(chain.start + i) % loop.size()];
-        const Vec2 a = data.points[e.v0], b = data.points[e.v1];
-        const double length = (b - a).norm();
-        if (length <= 0) continue;
-        if (walked + length >= at || i == chain.count - 1) {
-          *direction = (b - a) / length;
-          return Vec2(a + std::clamp((at - walked) / length, 0.0, 1.0) * (b - a));
-        }
-        walked += length;
-      }
+      if (const auto point = chain_point(chain, at, direction)) return *point;
       *direction = Vec2::UnitX();
       return label.position;
     };
@@ -801,12 +826,43 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       placed = true;
     }
     if (!placed) {
+      // The other side of a slit already names it: this side goes unprinted, rather than
+      // over its twin in the slit.
+      for (std::size_t m = 0; m < n && !placed; ++m) {
+        const PieceLabel& twin = piece.labels[m];
+        if (printed[m] && twin.text == label.text && twin.chain >= 0 &&
+            slit(chains[twin.chain], chain)) {
+          printed[n] = 0;
+          placed = true;
+        }
+      }
+    }
+    if (!placed) {
       label.size = std::max(label.size, smallest);
       taken.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
-      warnings.push_back("piece " + piece.name + ": label " + label.text +
-                         " finds no spot clear of other text and lines");
+      clear_spot[n] = 0;
     }
   }
+  // A side of a slit that found no clear spot, where the other side found one: the other names
+  // the slit alone.
+  for (std::size_t m = 0; m < piece.labels.size(); ++m) {
+    if (clear_spot[m] || piece.labels[m].chain < 0) continue;
+    for (std::size_t n = 0; n < piece.labels.size() && printed[m]; ++n)
+      if (n != m && printed[n] && clear_spot[n] && piece.labels[n].text == piece.labels[m].text &&
+          piece.labels[n].chain >= 0 &&
+          slit(chains[piece.labels[n].chain], chains[piece.labels[m].chain]))
+        printed[m] = 0;
+    if (printed[m])
+      warnings.push_back("piece " + piece.name + ": label " + piece.labels[m].text +
+                         " finds no spot clear of other text and lines");
+  }
+  std::size_t kept = 0;
+  for (std::size_t n = 0; n < piece.labels.size(); ++n)
+    if (printed[n]) {
+      if (kept != n) piece.labels[kept] = std::move(piece.labels[n]);
+      ++kept;
+    }
+  piece.labels.resize(kept);
 }
 
 std::vector<std::array<Vec2, 4>> text_boxes(const Piece& piece) {
