@@ -46,8 +46,8 @@ void register_segment_feature(Registry& registry) {
               at_least(0))
           .add(
               "strip_estimate", [](O & o) -> auto& { return o.strip_estimate; },
-              "emit the model whole unless the refinement makes fewer strips of the parts "
-              "(estimated at the model's tolerance)")
+              "emit the model whole where the refinement makes fewer strips of it than of the "
+              "parts (estimated at the model's tolerance)")
           .add(
               "parts_ply", [](O & o) -> auto& { return o.parts_ply; },
               "write the parts, faces coloured by part, to <output>/parts.ply");
@@ -66,9 +66,9 @@ void register_segment_feature(Registry& registry) {
                     std::vector<Mesh> whole = segment_none(mesh);
                     if (options.strip_estimate && parts.size() > whole.size()) {
                       // Paper folds along a crease inside a strip as well: a crease is only worth a
-                      // boundary if the parts cost fewer strips than the model whole. The parts are
-                      // counted first, side by side; the model whole only up to their total (so the
-                      // usual loser on creased models stops early).
+                      // boundary if the parts cost no more strips than the model whole. The parts
+                      // are counted first, side by side; the model whole only up to their total (so
+                      // the usual loser on creased models stops early).
                       const double tolerance = in.model->refinement_tolerance();
                       const PieceLimits limits = in.model->piece_limits();
                       std::vector<int> counts(parts.size());
@@ -85,7 +85,9 @@ void register_segment_feature(Registry& registry) {
                             count_strips(part, tolerance, refine, static_cast<int>(cap), limits);
                         if (whole_strips > part_strips) break;
                       }
-                      if (part_strips >= whole_strips) parts = std::move(whole);
+                      // A tie keeps the parts: the same strips, but with their boundaries on
+                      // the creases (a cube's six faces, not one strip folded round it).
+                      if (part_strips > whole_strips) parts = std::move(whole);
                     }
                     emit_parts(in, out, std::move(parts), options.parts_ply);
                   });

@@ -197,6 +197,24 @@ TEST(Pieces, NoPieceWithoutAreaOnACube) {
   EXPECT_LE(out.report.at("result").at("pages").get<int>(), 12);  // 13 before
 }
 
+// libcgal-demo's cube.off (its own triangulation of the faces): the six faces cost six strips,
+// and so did the cube whole, folded round; a tie used to keep it whole, cut into 6 strips that
+// printed as 33 pieces. A tie keeps the faces: 6 parts, at most 12 pieces.
+TEST(Pieces, ACubeWhoseWholeCostsAsMuchAsItsFacesKeepsItsFaces) {
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k)
+    mesh.vertices.emplace_back((k == 2 || k == 3 || k == 6 || k == 7) ? 1.0 : -1.0,
+                               (k % 4 == 1 || k % 4 == 2) ? 1.0 : -1.0, k < 4 ? -1.0 : 1.0);
+  mesh.triangles = {{0, 1, 3}, {3, 1, 2}, {0, 4, 1}, {1, 4, 5}, {3, 2, 7}, {7, 2, 6},
+                    {4, 0, 3}, {7, 4, 3}, {6, 4, 7}, {6, 5, 4}, {1, 5, 6}, {2, 1, 6}};
+  const auto out = run_pipeline(mesh, "2%", "cgal_cube");
+  expect_certified(mesh, out);
+  expect_exact_seams(out);
+  EXPECT_EQ(out.report.at("result").at("segments").get<int>(), 6);
+  const auto pieces = nlohmann::json::parse(testing::read_text(out.dir / "pieces.json"));
+  EXPECT_LE(pieces.at("pieces").size(), 12u);
+}
+
 // Three meshes of libcgal-demo (installed by scripts/install-deps.sh), when present.
 TEST(Pieces, ExactSeamsOnLibcgalDemoMeshes) {
   const std::filesystem::path archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
