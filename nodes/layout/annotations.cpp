@@ -510,6 +510,12 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     }
     return true;
   };
+  // Labels m and n name the two sides of one slit.
+  auto slit_twins = [&](std::size_t m, std::size_t n) {
+    const PieceLabel &x = piece.labels[m], &y = piece.labels[n];
+    return m != n && x.text == y.text && x.chain >= 0 && y.chain >= 0 &&
+           slit(chains[x.chain], chains[y.chain]);
+  };
   std::vector<char> printed(piece.labels.size(), 1);
   std::vector<char> clear_spot(piece.labels.size(), 1);
   for (std::size_t n = 0; n < piece.labels.size(); ++n) {
@@ -828,14 +834,11 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     if (!placed) {
       // The other side of a slit already names it: this side goes unprinted, rather than
       // over its twin in the slit.
-      for (std::size_t m = 0; m < n && !placed; ++m) {
-        const PieceLabel& twin = piece.labels[m];
-        if (printed[m] && twin.text == label.text && twin.chain >= 0 &&
-            slit(chains[twin.chain], chain)) {
+      for (std::size_t m = 0; m < n && !placed; ++m)
+        if (printed[m] && slit_twins(m, n)) {
           printed[n] = 0;
           placed = true;
         }
-      }
     }
     if (!placed) {
       label.size = std::max(label.size, smallest);
@@ -848,10 +851,7 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
   for (std::size_t m = 0; m < piece.labels.size(); ++m) {
     if (clear_spot[m] || piece.labels[m].chain < 0) continue;
     for (std::size_t n = 0; n < piece.labels.size() && printed[m]; ++n)
-      if (n != m && printed[n] && clear_spot[n] && piece.labels[n].text == piece.labels[m].text &&
-          piece.labels[n].chain >= 0 &&
-          slit(chains[piece.labels[n].chain], chains[piece.labels[m].chain]))
-        printed[m] = 0;
+      if (printed[n] && clear_spot[n] && slit_twins(n, m)) printed[m] = 0;
     if (printed[m])
       warnings.push_back("piece " + piece.name + ": label " + piece.labels[m].text +
                          " finds no spot clear of other text and lines");

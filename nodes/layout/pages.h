@@ -86,8 +86,7 @@ struct LayoutOptions {
   /// strips split.
   bool split_long_strips = true;
   /// Nest: how many more strips split in half pages one page saved is worth (>= 1). More
-  /// saves paper at the cost of pieces: on libcgal-demo at 2%, 3 gives 651 pages and 3,477
-  /// pieces, any number of splits 618 pages and 3,701 pieces.
+  /// saves paper at the cost of pieces (the README's layout row gives measured figures).
   int splits_per_page = 3;
 };
 

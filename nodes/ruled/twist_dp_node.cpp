@@ -27,7 +27,8 @@ void register_ruled_twist_dp(Registry& registry) {
           auto candidate = in.get_shared<Candidate>();
           StripCandidate result;
           result.candidate = candidate;
-          result.strip = std::make_shared<const RuledStrip>(build_strip(*candidate->part.mesh, *candidate, refine));
+          result.strip = std::make_shared<const RuledStrip>(
+              build_strip(*candidate->part.mesh, *candidate, refine));
           out.emit("out", std::move(result));
         });
       }));

@@ -67,8 +67,8 @@ void register_segment_feature(Registry& registry) {
                     if (options.strip_estimate && parts.size() > whole.size()) {
                       // Paper folds along a crease inside a strip as well: a crease is only worth a
                       // boundary if the parts cost no more strips than the model whole. The parts
-                      // are counted first, side by side; the model whole only up to their total (so
-                      // the usual loser on creased models stops early).
+                      // are counted first, side by side; the model whole only below their total
+                      // (so the usual loser on creased models stops early).
                       const double tolerance = in.model->refinement_tolerance();
                       const PieceLimits limits = in.model->piece_limits();
                       std::vector<int> counts(parts.size());
@@ -77,17 +77,21 @@ void register_segment_feature(Registry& registry) {
                       });
                       long part_strips = 0;
                       for (int count : counts) part_strips += count;
+                      // A tie keeps the parts: the same strips, but with their boundaries on
+                      // the creases (a cube's six faces, not one strip folded round it). So the
+                      // model whole is counted only while it stays below the parts.
                       long whole_strips = 0;
                       for (const Mesh& part : whole) {
-                        const long cap =
-                            std::min(part_strips - whole_strips, long{1} << 20);  // >= 0
+                        const long cap = std::min(part_strips - 1 - whole_strips, long{1} << 20);
+                        if (cap < 0) {
+                          whole_strips = part_strips;
+                          break;
+                        }
                         whole_strips +=
                             count_strips(part, tolerance, refine, static_cast<int>(cap), limits);
-                        if (whole_strips > part_strips) break;
+                        if (whole_strips >= part_strips) break;
                       }
-                      // A tie keeps the parts: the same strips, but with their boundaries on
-                      // the creases (a cube's six faces, not one strip folded round it).
-                      if (part_strips > whole_strips) parts = std::move(whole);
+                      if (whole_strips < part_strips) parts = std::move(whole);
                     }
                     emit_parts(in, out, std::move(parts), options.parts_ply);
                   });
