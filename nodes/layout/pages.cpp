@@ -229,9 +229,13 @@ Prepared prepare(const std::vector<FlatStrip>& strips, const LayoutOptions& opti
   return p;
 }
 
-bool strip_fits(const StripData& data, const Prepared& p) {
-  return hull_fits(convex_hull(piece_points(data, data.triangles)), p.area.x() - 2 * p.reserve,
+bool strip_fits(const StripData& data, const Prepared& p, const std::vector<int>& triangles) {
+  return hull_fits(convex_hull(piece_points(data, triangles)), p.area.x() - 2 * p.reserve,
                    p.area.y() - 2 * p.reserve);
+}
+
+bool strip_fits(const StripData& data, const Prepared& p) {
+  return strip_fits(data, p, data.triangles);
 }
 
 struct Orientation {
@@ -488,7 +492,7 @@ namespace {
 // A strip that packs badly: longer than half the page's long side and thin or bent (its area
 // under 40% of its box, or the box over 3 times as long as wide). One larger than the page
 // counts too: split only to fit the page, its parts stay as long and bent.
-bool long_and_thin(const StripData& data, const Prepared& p) {
+bool long_and_thin(const StripData& data, const Prepared& p, double* waste) {
   const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
   bool fits = false;
   const OrientedBox box = tightest_box(convex_hull(piece_points(data, data.triangles)), w, h, &fits);
@@ -499,6 +503,7 @@ bool long_and_thin(const StripData& data, const Prepared& p) {
                                  data.points[tri[2]] - data.points[tri[0]]));
   }
   const double length = box.size.maxCoeff(), width = box.size.minCoeff();
+  *waste = box.size.prod() - area;
   return length > 0.5 * std::max(w, h) &&
          (area < 0.4 * box.size.prod() || length > 3.0 * width);
 }
@@ -507,14 +512,19 @@ struct LongStrips {
   int found = 0;     // strips that fit the page but are long and thin
   int oversize = 0;  // strips larger than the page, long and thin
   int split = 0;     // of those split_long covers, split in parts of half a page
+  std::vector<std::pair<double, int>> waste;  // of each long thin strip: box minus area, index
 };
 
-// Which long and thin strips a layout splits in parts of half a page.
-enum class SplitLong { None, Fitting, All };
+// Which long and thin strips a layout splits in parts of half a page (Fitting: those that fit
+// the page; All: every one), or splits where they bend (Bends: every one; a part that still
+// fits no page is then split to fit it).
+enum class SplitLong { None, Fitting, All, Bends };
 
-// The layout, long and thin strips split as `split_long` says; *long_strips counts them.
+// The layout, long and thin strips split as `split_long` says (of them only those `chosen`
+// marks by strip index, where given); *long_strips counts them.
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                          SplitLong split_long, LongStrips* long_strips);
+                          SplitLong split_long, LongStrips* long_strips,
+                          const std::vector<char>* chosen = nullptr);
 
 }  // namespace
 
@@ -523,36 +533,73 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   PatternLayout layout = layout_with(strips, options, SplitLong::None, &whole);
   // No long thin strip is found unless nesting with split_long_strips.
   if (layout.pages.size() < 2 || whole.found + whole.oversize == 0) return layout;
-  // The strips that fit split, then also those larger than the page (split only to fit it
-  // their parts would stay long and bent): each kept where every page it saves against the
-  // best so far costs at most splits_per_page more strips split.
+  // Laid out again with the long thin strips that fit split in half pages, then also those
+  // larger than the page (split only to fit it their parts would stay long and bent), then
+  // with them split where they bend; each kept where every page it saves against the best so
+  // far costs at most splits_per_page more pieces.
+  // Pieces printed of the model (joining strips apart).
+  auto pieces_of = [](const PatternLayout& l) {
+    int count = 0;
+    for (const Page& page : l.pages) count += static_cast<int>(page.pieces.size());
+    return count;
+  };
   PatternLayout best = std::move(layout);
   const std::size_t unsplit_pages = best.pages.size();
-  int best_split = 0;
-  for (SplitLong mode : {SplitLong::Fitting, SplitLong::All}) {
-    if (mode == SplitLong::Fitting ? whole.found == 0 : whole.oversize == 0) continue;
+  const int unsplit_pieces = pieces_of(best);
+  int best_added = 0;
+  bool kept = false, bends = false;
+  // Kept where every page it saves against the best so far costs at most splits_per_page more
+  // pieces; says whether it saved pages at too high a cost.
+  auto too_costly = [&](SplitLong mode, const std::vector<char>* chosen) {
     LongStrips parts;
-    PatternLayout halves = layout_with(strips, options, mode, &parts);
+    PatternLayout halves = layout_with(strips, options, mode, &parts, chosen);
     const int saved = static_cast<int>(best.pages.size()) - static_cast<int>(halves.pages.size());
-    if (parts.split == 0 || saved <= 0 ||
-        parts.split - best_split > options.splits_per_page * saved)
-      continue;
+    const int added = pieces_of(halves) - unsplit_pieces;
+    if (parts.split == 0 || saved <= 0) return false;
+    if (added - best_added > options.splits_per_page * saved) return true;
     best = std::move(halves);
-    best_split = parts.split;
+    best_added = added;
+    kept = true;
+    bends = mode == SplitLong::Bends;
+    return false;
+  };
+  if (whole.found > 0) too_costly(SplitLong::Fitting, nullptr);
+  if (whole.oversize > 0) too_costly(SplitLong::All, nullptr);
+  // Split where they bend: every long thin strip, then (where that saves pages, but too few
+  // for the pieces it adds) only the half, the quarter, the eighth of them that waste the most
+  // paper round them, till one is kept.
+  if (too_costly(SplitLong::Bends, nullptr)) {
+    std::vector<std::pair<double, int>> order = whole.waste;
+    std::stable_sort(order.begin(), order.end(),
+                     [](const auto& x, const auto& y) { return x.first > y.first; });
+    std::size_t previous = order.size();
+    for (std::size_t divisor : {2, 4, 8}) {
+      const std::size_t count = std::max<std::size_t>(1, order.size() / divisor);
+      if (count >= previous) continue;
+      previous = count;
+      std::vector<char> chosen(strips.size(), 0);
+      for (std::size_t i = 0; i < count; ++i) chosen[order[i].second] = 1;
+      if (!too_costly(SplitLong::Bends, &chosen)) break;
+    }
   }
-  if (best_split > 0)
-    best.warnings.push_back(std::to_string(best_split) + " long thin " +
-                            (best_split == 1 ? "strip was" : "strips were") +
-                            " split in parts of half a page, which saves " +
-                            std::to_string(unsplit_pages - best.pages.size()) + " of " +
-                            std::to_string(unsplit_pages) + " pages");
+  if (kept) {
+    const int count = std::abs(best_added);
+    best.warnings.push_back(
+        "long thin strips" +
+        std::string(bends ? " split where they bend" : " split in parts of half a page") +
+        " make " + std::to_string(count) + (best_added < 0 ? " fewer " : " more ") +
+        (count == 1 ? "piece" : "pieces") + ", which saves " +
+        std::to_string(unsplit_pages - best.pages.size()) + " of " + std::to_string(unsplit_pages) +
+        " pages");
+  }
   return best;
 }
 
 namespace {
 
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                          SplitLong split_long, LongStrips* long_strips) {
+                          SplitLong split_long, LongStrips* long_strips,
+                          const std::vector<char>* chosen) {
   *long_strips = LongStrips();
   Prepared p = prepare(strips, options);
   PatternLayout layout;
@@ -577,12 +624,25 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
     ++number;
     std::vector<std::vector<int>> sets;
     const bool fits = strip_fits(data, p);
-    const bool long_thin = options.packing == PackingMethod::Nest &&
-                           options.split_long_strips && long_and_thin(data, p);
+    double waste = 0.0;
+    bool long_thin = options.packing == PackingMethod::Nest && options.split_long_strips &&
+                     long_and_thin(data, p, &waste);
     (fits ? long_strips->found : long_strips->oversize) += long_thin;
+    if (long_thin) long_strips->waste.push_back({waste, s});
+    if (chosen && !(*chosen)[s]) long_thin = false;
     const double w = p.area.x() - 2 * p.reserve, h = p.area.y() - 2 * p.reserve;
-    if (long_thin && (split_long == SplitLong::All ||
-                      (split_long == SplitLong::Fitting && fits))) {
+    if (long_thin && split_long == SplitLong::Bends) {
+      for (std::vector<int>& part : split_at_bends(data, used_labels)) {
+        if (strip_fits(data, p, part)) {
+          sets.push_back(std::move(part));
+          continue;
+        }
+        for (std::vector<int>& piece : split_to_fit(data, part, w, h, used_labels))
+          sets.push_back(std::move(piece));
+      }
+      long_strips->split += sets.size() > 1;
+    } else if (long_thin &&
+               (split_long == SplitLong::All || (split_long == SplitLong::Fitting && fits))) {
       // Half the page: its long side halved.
       sets = h >= w ? split_to_fit(data, w, 0.5 * h, used_labels)
                     : split_to_fit(data, 0.5 * w, h, used_labels);

@@ -82,10 +82,10 @@ struct LayoutOptions {
   double nest_cell_mm = 0.5;  // Nest: raster cell
   int nest_repacks = 3;       // Nest: fills made again with the last page's pieces first
   /// Nest: lay out again with long thin strips (longer than half the page) split in parts of
-  /// half a page, and keep that where it saves pages, at least one per `splits_per_page`
-  /// strips split.
+  /// half a page, or where they bend, and keep that where it saves pages, at least one per
+  /// `splits_per_page` more pieces.
   bool split_long_strips = true;
-  /// Nest: how many more strips split in half pages one page saved is worth (>= 1). More
+  /// Nest: how many more pieces (long thin strips split) one page saved is worth (>= 1). More
   /// saves paper at the cost of pieces (the README's layout row gives measured figures).
   int splits_per_page = 3;
 };

@@ -82,12 +82,12 @@ ParamTable<O> layout_table(bool nesting) {
             between(0, 10))
         .add(
             "split_long_strips", [](O & o) -> auto& { return o.split_long_strips; },
-            "lay out again with long thin strips split in parts of half a page; kept where "
-            "that needs fewer pages")
+            "lay out again with long thin strips split in parts of half a page, or where they "
+            "bend; kept where that needs fewer pages")
         .add(
             "splits_per_page", [](O & o) -> auto& { return o.splits_per_page; },
-            "more strips split in half pages that one page saved is worth (more: less paper, "
-            "more pieces)",
+            "more pieces (long thin strips split) that one page saved is worth (more: less "
+            "paper, more pieces)",
             at_least(1))
         .choice(
             "packing", [](O & o) -> auto& { return o.packing; },

@@ -23,6 +23,7 @@ struct StripData {
   std::unordered_map<std::uint64_t, int> boundary_of;          // directed edge -> boundary index
   std::unordered_map<std::uint64_t, std::string> split_label;  // unordered inner edge
   bool missing_boundary_warned = false;
+  int splits = 0;  // split seams made so far (labelled <strip id>-1, -2, ...)
 };
 
 /// An edge of a piece's boundary loop, with the seam label it carries and its flap.

@@ -2,6 +2,7 @@
 #include "nodes/layout/split_to_fit.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -92,19 +93,56 @@ std::string unique_label(const std::string& wanted, std::set<std::string>& used)
   return label;
 }
 
+// `head` (a connected part of `set`) cut off the rest of `set`: the new seams between head and
+// each connected part of the rest labelled <strip id>-<k> in data.split_label; the parts of the
+// rest appended to `rest_parts`.
+void cut_off(StripData& data, const std::vector<int>& set, std::vector<int> head,
+             std::set<std::string>& used_labels, std::vector<std::vector<int>>& rest_parts) {
+  std::sort(head.begin(), head.end());
+  std::vector<int> rest;
+  std::set_difference(set.begin(), set.end(), head.begin(), head.end(), std::back_inserter(rest));
+  std::unordered_map<int, char> in_head;
+  for (int t : head) in_head[t] = 1;
+  for (std::vector<int>& part : components(data, rest)) {
+    const std::string label = unique_label(
+        std::to_string(data.strip->id) + "-" + std::to_string(++data.splits), used_labels);
+    for (int t : part) {
+      const Triangle& tri = data.strip->triangles[t];
+      for (int i = 0; i < 3; ++i) {
+        const int a = tri[i], b = tri[(i + 1) % 3];
+        auto it = data.owner.find(directed_edge_key(b, a));
+        if (it != data.owner.end() && in_head.count(it->second))
+          data.split_label[directed_edge_key(std::min(a, b), std::max(a, b))] = label;
+      }
+    }
+    rest_parts.push_back(std::move(part));
+  }
+}
+
+// The area of the tightest rectangle round a triangle set (mm^2).
+double box_area(const StripData& data, const std::vector<int>& set) {
+  bool unused = false;
+  return tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused).size.prod();
+}
+
 }  // namespace
 
-// Splits the strip into connected triangle sets each fitting width x height: a Dijkstra
+std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double height,
+                                           std::set<std::string>& used_labels) {
+  return split_to_fit(data, data.triangles, width, height, used_labels);
+}
+
+// Splits the set into connected triangle sets each fitting width x height: a Dijkstra
 // prefix from one end of the set (a ruled strip is a path of triangles, so the cut is one
 // ruling), repeated on what is left. The prefix is not the largest that fits (that leaves
 // a sliver at the end) but the one nearest 1/k of the set's length, where k is the number
 // of pieces the greedy split needs, among those that leave a rest still splittable into
 // k - 1 pieces: the pieces come out of similar length.
-std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double height,
+std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<int>& triangles,
+                                           double width, double height,
                                            std::set<std::string>& used_labels) {
   std::vector<std::vector<int>> done;
-  std::vector<std::vector<int>> work = components(data, data.triangles);
-  int next_label = 1;
+  std::vector<std::vector<int>> work = components(data, triangles);
   // A piece must fit in its tightest orientation: one that fits only diagonally would take
   // a page to itself.
   auto fits = [&](const std::vector<int>& set) {
@@ -161,26 +199,88 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double
         lo = cut;
     }
     std::vector<int> head(order.begin(), order.begin() + lo);
+    cut_off(data, set, head, used_labels, work);
     std::sort(head.begin(), head.end());
-    std::vector<int> rest;
-    std::set_difference(set.begin(), set.end(), head.begin(), head.end(), std::back_inserter(rest));
-    std::unordered_map<int, char> in_head;
-    for (int t : head) in_head[t] = 1;
-    for (std::vector<int>& part : components(data, rest)) {
-      const std::string label = unique_label(
-          std::to_string(data.strip->id) + "-" + std::to_string(next_label++), used_labels);
-      for (int t : part) {
-        const Triangle& tri = data.strip->triangles[t];
-        for (int i = 0; i < 3; ++i) {
-          const int a = tri[i], b = tri[(i + 1) % 3];
-          auto it = data.owner.find(directed_edge_key(b, a));
-          if (it != data.owner.end() && in_head.count(it->second))
-            data.split_label[directed_edge_key(std::min(a, b), std::max(a, b))] = label;
+    done.push_back(std::move(head));
+  }
+  return done;
+}
+
+// Splits the strip where it bends. Along a Dijkstra order from one end of each connected set
+// (a ruled strip is a path of triangles, so a cut is one ruling), cuts are chosen among
+// kSteps + 1 evenly spaced positions, parts at least kShortest steps long: the choice
+// (by dynamic programming) minimises the area of the tightest rectangles round the parts plus
+// kPerPiece times the set's own area for each part after the first, so a cut is made only
+// where it saves much paper round the parts.
+std::vector<std::vector<int>> split_at_bends(StripData& data, std::set<std::string>& used_labels) {
+  constexpr int kSteps = 24, kShortest = 2;
+  constexpr double kPerPiece = 0.5, kShortestMm = 20.0;
+  std::vector<std::vector<int>> done;
+  for (std::vector<int>& set : components(data, data.triangles)) {
+    const std::vector<int> from_first = dijkstra_order(data, set, set.front());
+    std::vector<double> distance;
+    const std::vector<int> order = dijkstra_order(data, set, from_first.back(), &distance);
+    const double total = distance.back();
+    if (set.size() < 4 || total < kShortest * kShortestMm) {
+      done.push_back(std::move(set));
+      continue;
+    }
+    // Cut positions in the order: position k at k/kSteps of the length (0 and the end).
+    std::vector<std::size_t> at(kSteps + 1);
+    for (int k = 0; k <= kSteps; ++k)
+      at[k] =
+          std::lower_bound(distance.begin(), distance.end(), total * k / kSteps) - distance.begin();
+    at[0] = 0;
+    at[kSteps] = order.size();
+    double area = 0.0;
+    for (int t : set) {
+      const Triangle& tri = data.strip->triangles[t];
+      area += 0.5 * std::abs(cross(data.points[tri[1]] - data.points[tri[0]],
+                                   data.points[tri[2]] - data.points[tri[0]]));
+    }
+    // The part from position i to j: the tightest rectangle's area, or infinity where it is
+    // empty or not connected.
+    auto part_cost = [&](int i, int j) {
+      if (at[j] <= at[i]) return std::numeric_limits<double>::infinity();
+      std::vector<int> part(order.begin() + at[i], order.begin() + at[j]);
+      std::sort(part.begin(), part.end());
+      if (i > 0 && components(data, part).size() != 1)
+        return std::numeric_limits<double>::infinity();
+      return box_area(data, part);
+    };
+    // best[j]: the least cost of the order up to position j; from[j] the last cut before it.
+    std::vector<double> best(kSteps + 1, std::numeric_limits<double>::infinity());
+    std::vector<int> from(kSteps + 1, -1);
+    best[0] = 0.0;
+    for (int j = kShortest; j <= kSteps; ++j)
+      for (int i = 0; i + kShortest <= j; ++i) {
+        if (i > 0 && i < kShortest) continue;
+        if (j < kSteps && kSteps - j < kShortest) continue;
+        if (!std::isfinite(best[i])) continue;
+        const double cost = best[i] + part_cost(i, j) + (i > 0 ? kPerPiece * area : 0.0);
+        if (cost < best[j]) {
+          best[j] = cost;
+          from[j] = i;
         }
       }
-      work.push_back(std::move(part));
+    std::vector<int> cuts;
+    for (int j = from[kSteps]; j > 0; j = from[j]) cuts.push_back(j);
+    if (cuts.empty()) {
+      done.push_back(std::move(set));
+      continue;
     }
-    done.push_back(std::move(head));
+    // Cut off from the far end back: each head is a prefix of the order, so the rest stays
+    // one connected part with the parts cut off before it.
+    std::vector<int> rest = set;
+    for (int cut : cuts) {
+      std::vector<int> head(order.begin(), order.begin() + at[cut]);
+      std::vector<std::vector<int>> tail;
+      cut_off(data, rest, head, used_labels, tail);
+      for (auto& part : tail) done.push_back(std::move(part));
+      std::sort(head.begin(), head.end());
+      rest = std::move(head);
+    }
+    done.push_back(std::move(rest));
   }
   return done;
 }
