@@ -399,8 +399,10 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
     flaps.emplace_back(flap.base.rbegin(), flap.base.rend());
     flaps.back().insert(flaps.back().end(), flap.outer.begin(), flap.outer.end());
   }
-  auto fits_outside = [&](const std::array<Vec2, 4>& candidate) {
-    if (!clear(candidate)) return false;
+  // Beside the piece, whatever other text is there: no cut line crosses it, and it meets none
+  // of the piece's triangles and tabs.
+  auto beside = [&](const std::array<Vec2, 4>& candidate) {
+    if (!router.box_clear(candidate)) return false;
     if (overlaps_triangles(candidate.data(), 4, shapes, 0.0)) return false;
     for (const auto& flap : flaps) {
       for (std::size_t i = 0; i < flap.size(); ++i)
@@ -409,6 +411,9 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         if (point_in_polygon(corner, flap)) return false;
     }
     return true;
+  };
+  auto fits_outside = [&](const std::array<Vec2, 4>& candidate) {
+    return clear(candidate) && beside(candidate);
   };
   // The number first: at the best spot, shrunk (not below the smallest text) until it lies
   // clear on the piece; else at the incentres of the other roomiest triangles.
@@ -841,7 +846,41 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
         }
     }
     if (!placed) {
+      // No clear spot: the spot along the seam, on the piece or beside it and crossed by no cut
+      // line, whose text meets the fewest other texts (the first spot where none meets fewer).
+      auto crowding = [&](const std::array<Vec2, 4>& candidate) {
+        int count = 0;
+        for (const auto& other : taken)
+          count += convex_overlap(candidate.data(), 4, other.data(), 4, 0.0);
+        return count;
+      };
       label.size = std::max(label.size, smallest);
+      int least =
+          crowding(text_box(label.position, label.direction, label.size, label.text.size()));
+      for (double gap : {0.6, 1.2, 2.0, 3.0, 4.5}) {
+        for (double fraction : {0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9}) {
+          Vec2 along;
+          const Vec2 on_edge = point_at(fraction * total, &along);
+          for (double side : {1.0, -1.0}) {
+            if (least == 0) break;
+            const Vec2 normal = side * Vec2(-along.y(), along.x());
+            const Vec2 centre = on_edge + normal * (kHalfLineEm * smallest + gap);
+            const auto candidate = text_box(centre, along, smallest, label.text.size());
+            const bool inside = side > 0;
+            if (inside ? !(box_on_piece(candidate, shapes) && router.box_clear(candidate))
+                       : !beside(candidate))
+              continue;
+            const int count = crowding(candidate);
+            if (count >= least) continue;
+            least = count;
+            label.position = centre;
+            label.direction = along;
+            label.size = smallest;
+            label.outside = !inside;
+            label.leader.clear();
+          }
+        }
+      }
       taken.push_back(text_box(label.position, label.direction, label.size, label.text.size()));
       clear_spot[n] = 0;
     }
