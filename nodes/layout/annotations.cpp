@@ -885,12 +885,12 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       clear_spot[n] = 0;
     }
   }
-  // A side of a slit that found no clear spot, where the other side found one: the other names
-  // the slit alone.
+  // A side of a slit that found no clear spot, where the other side found one, or where the
+  // other found none either and comes first: the other names the slit alone.
   for (std::size_t m = 0; m < piece.labels.size(); ++m) {
     if (clear_spot[m] || piece.labels[m].chain < 0) continue;
     for (std::size_t n = 0; n < piece.labels.size() && printed[m]; ++n)
-      if (printed[n] && clear_spot[n] && slit_twins(n, m)) printed[m] = 0;
+      if (printed[n] && (clear_spot[n] || n < m) && slit_twins(n, m)) printed[m] = 0;
     if (printed[m])
       warnings.push_back("piece " + piece.name + ": label " + piece.labels[m].text +
                          " finds no spot clear of other text and lines");
