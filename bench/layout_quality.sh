@@ -4,7 +4,8 @@
 # layout.rectangles (MaxRects, the packer before), everything else the same. Prints per mesh
 # the pages of each, the mean fill of every page but the last, seams without a tab (nor a
 # joining strip), the smallest text, the overlapping texts and the joining strips (report.json
-# "layout"), the layout node's seconds, the segments its SVG pages print with zero length; then
+# "layout"), the layout node's seconds, the segments its SVG pages print with zero length, the
+# seam sides whose partner piece is printed on the same page (pieces.json); then
 # the totals and the five meshes whose page count fell the most.
 #
 #   bench/layout_quality.sh                               # all meshes, 2%, 200 mm
@@ -91,6 +92,17 @@ r = json.load(open(sys.argv[2])) if sys.argv[2] != "-" else {
     "layout": {"pages": n["layout"]["rectangle_pages"], "page_fill": [float("nan")] * 2},
     "timing": {"nodes": {"layout": {"seconds": float("nan")}}}}
 ln, lr = n["layout"], r["layout"]
+# Seam sides whose partner piece is printed on the same page (pieces.json).
+glued = same = 0
+pieces_json = os.path.join(os.path.dirname(sys.argv[1]), "pieces.json")
+if os.path.exists(pieces_json):
+    pieces = json.load(open(pieces_json))["pieces"]
+    page_of = {p["name"]: p["page"] for p in pieces}
+    for p in pieces:
+        for seam in p.get("seams", []):
+            if seam.get("partner") in page_of:
+                glued += 1
+                same += page_of[seam["partner"]] == p["page"]
 def fill(l):
     f = l["page_fill"]
     return sum(f[:-1]) / (len(f) - 1) if len(f) > 1 else float("nan")
@@ -98,14 +110,16 @@ print("\t".join(str(x) for x in [sys.argv[3], ln["pages"], lr["pages"], f"{fill(
       ln["seams"], ln["seams_without_tab"], ln["smallest_text_mm"], ln["overlapping_text"],
       ln.get("joining_strips", 0),
       f'{n["timing"]["nodes"]["layout"]["seconds"]:.3f}', f'{r["timing"]["nodes"]["layout"]["seconds"]:.3f}',
-      zero]))
+      zero, same, glued]))
 PY
 done
 python3 - "$rows" <<'PY'
 import sys, math
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip()]
-print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | joining strips | layout s nest | layout s rect | zero-length segments |")
-print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+print("| mesh | pages nest | pages rect | fill nest | fill rect | seams | no tab | smallest text mm | overlapping text | joining strips | layout s nest | layout s rect | zero-length segments | partner on the page |")
+print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+same = sum(int(r[13]) for r in rows); glued = sum(int(r[14]) for r in rows)
+for r in rows: r[13] = f"{int(r[13])}/{int(r.pop(14))}"
 for r in rows: print("| " + " | ".join(r) + " |")
 pn = sum(int(r[1]) for r in rows); pr = sum(int(r[2]) for r in rows)
 def mean(i):
@@ -118,7 +132,8 @@ print(f"{len(rows)} meshes: pages {pn} nested vs {pr} rectangles ({pn / max(pr, 
       f"{min(float(r[7]) for r in rows):.2f} mm; overlapping texts {sum(int(r[8]) for r in rows)}; "
       f"joining strips {sum(int(r[9]) for r in rows)}; "
       f"layout seconds {sum(float(r[10]) for r in rows):.1f} vs {sum(float(r[11]) for r in rows):.1f}; "
-      f"segments printed with zero length {sum(int(r[12]) for r in rows)}")
+      f"segments printed with zero length {sum(int(r[12]) for r in rows)}; seam sides with "
+      f"their partner on the same page {same} of {glued}")
 drop = sorted(rows, key=lambda r: int(r[1]) - int(r[2]))[:5]
 print("largest page drops: " + ", ".join(f"{r[0]} {r[2]} -> {r[1]}" for r in drop))
 PY

@@ -199,14 +199,27 @@ namespace {
 
 // One bottom-left fill of the shapes in `order`; sets *pages and *last_cells (the cells the
 // last page's pieces cover).
+// With `run` (a run index per shape, runs consecutive in `order`), the pieces of a run go on
+// the page where its first piece went or later, and that first piece on the page where the
+// run before began or later: runs stay together.
 std::vector<NestPlacement> fill_in_order(const std::vector<std::vector<Mask>>& masks,
                                          const std::vector<int>& order, int width, int height,
-                                         int grow, double cell, int* pages, long* last_cells) {
+                                         int grow, double cell, int* pages, long* last_cells,
+                                         const std::vector<int>* run = nullptr) {
   std::vector<NestPlacement> placements(masks.size());
   std::vector<Sheet> sheets;
   std::vector<long> cells;
   const Sheet empty(std::max(width, 1), std::max(height, 1));
+  std::size_t floor = 0, run_floor = 0;  // first page tried: in this run, in the run before
+  int current_run = -1;
+  bool run_started = false;
   for (int i : order) {
+    if (run && (*run)[i] != current_run) {
+      current_run = (*run)[i];
+      run_floor = floor;
+      run_started = false;
+    }
+    if (run && !run_started) floor = run_floor;
     if (masks[i].empty() || masks[i][0].cells == 0) continue;
     bool fits_somewhere = false;
     for (const Mask& mask : masks[i]) {
@@ -217,7 +230,7 @@ std::vector<NestPlacement> fill_in_order(const std::vector<std::vector<Mask>>& m
       }
     }
     if (!fits_somewhere) continue;
-    for (std::size_t page = 0;; ++page) {
+    for (std::size_t page = run ? floor : 0;; ++page) {
       if (page == sheets.size()) {
         sheets.emplace_back(width, height);
         cells.push_back(0);
@@ -239,6 +252,10 @@ std::vector<NestPlacement> fill_in_order(const std::vector<std::vector<Mask>>& m
       placements[i].page = static_cast<int>(page);
       placements[i].angle = mask.angle;
       placements[i].offset = Vec2(best_x * cell, best_y * cell) - mask.min;
+      if (run && !run_started) {
+        floor = page;
+        run_started = true;
+      }
       break;
     }
   }
@@ -317,6 +334,59 @@ std::vector<NestPlacement> nest_shapes(const std::vector<NestShape>& shapes, con
         fill_in_order(masks, order, width, height, grow, cell, &again.pages, &again.last);
     if (!better(again, kept)) break;
     kept = std::move(again);
+  }
+  // Pieces of one region of the model near each other, where that costs no page: the pieces
+  // (given in the model's order, so a region's pieces come together) taken in runs of half a
+  // page of paper or more (on to the first shape glued to none of the run, up to a page),
+  // each run largest first and kept on the pages from where the run
+  // before began; kept where that fill needs no more pages and puts more glued pieces on one
+  // page.
+  if (options.grouped && kept.pages > 1 && !options.neighbours.empty()) {
+    const double run_cells = 0.5 * static_cast<double>(width) * height;
+    std::vector<int> grouped, run, run_of(shapes.size(), 0);
+    double cells = 0;
+    int runs = 0;
+    auto flush = [&] {
+      std::stable_sort(run.begin(), run.end(),
+                       [&](int a, int b) { return measure(0, a) > measure(0, b); });
+      for (int i : run) run_of[i] = runs;
+      ++runs;
+      grouped.insert(grouped.end(), run.begin(), run.end());
+      run.clear();
+      cells = 0;
+    };
+    std::vector<std::vector<int>> glued(shapes.size());
+    for (const auto& [a, b] : options.neighbours) {
+      glued[a].push_back(b);
+      glued[b].push_back(a);
+    }
+    std::vector<char> in_run(shapes.size(), 0);
+    for (int i = 0; i < static_cast<int>(shapes.size()); ++i) {
+      run.push_back(i);
+      in_run[i] = 1;
+      cells += measure(0, i);
+      // A run ends past half a page where the next shape is glued to none of it, and at a
+      // page whatever comes next.
+      const int next = i + 1;
+      const bool joined = next < static_cast<int>(shapes.size()) &&
+                          std::any_of(glued[next].begin(), glued[next].end(),
+                                      [&](int j) { return in_run[j] != 0; });
+      if (cells >= 2 * run_cells || (cells >= run_cells && !joined)) {
+        for (int j : run) in_run[j] = 0;
+        flush();
+      }
+    }
+    flush();
+    Fill near;
+    near.placements =
+        fill_in_order(masks, grouped, width, height, grow, cell, &near.pages, &near.last, &run_of);
+    auto together = [&](const Fill& fill) {
+      int count = 0;
+      for (const auto& [a, b] : options.neighbours)
+        count += fill.placements[a].page == fill.placements[b].page;
+      return count;
+    };
+    if (near.pages <= kept.pages && together(near) > together(kept)) kept = std::move(near);
   }
   *pages = kept.pages;
   return std::move(kept.placements);

@@ -8,9 +8,12 @@
 // there are) and the fill with the fewest pages and the emptiest last page is kept. Then the
 // pieces of its last page are moved to the front of its order and the fill made again, as long
 // as that needs fewer pages or leaves less on the last page (`repacks` times at most): the
-// pieces no earlier page had room for get the first choice of room.
+// pieces no earlier page had room for get the first choice of room. Last, a fill in the
+// pieces' own order, run by run (`grouped`), is kept where it costs no page and puts more
+// pieces glued to each other on one page.
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include "core/triangle_mesh.h"
@@ -32,6 +35,11 @@ struct NestOptions {
   int orders = 3;
   /// Fills made again with the last page's pieces first (0: none).
   int repacks = 3;
+  /// Then a fill in the shapes' own order, in runs of about half a page each largest first,
+  /// kept where it needs no more pages and puts more of the `neighbours` on one page: shapes
+  /// given near each other stay near each other.
+  bool grouped = true;
+  std::vector<std::pair<int, int>> neighbours;  // shapes glued to each other (by index)
 };
 
 /// Where a piece goes: page, and the map from its frame to the printable area (mm, origin at

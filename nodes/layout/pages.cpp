@@ -811,6 +811,13 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
     nest.rotations = options.nest_rotations;
     nest.cell_mm = options.nest_cell_mm;
     nest.repacks = options.nest_repacks;
+    std::vector<int> shape_of(pieces.size(), -1);
+    for (std::size_t k = 0; k < packed.size(); ++k) shape_of[packed[k]] = static_cast<int>(k);
+    for (const SeamPair& pair : pairs) {
+      if (pair.second < 0) continue;
+      const int a = shape_of[chains[pair.first].piece], b = shape_of[chains[pair.second].piece];
+      if (a >= 0 && b >= 0 && a != b) nest.neighbours.push_back({a, b});
+    }
     nested = nest_shapes(shapes, p.area, nest, &nested_pages);
     const bool complete = std::all_of(nested.begin(), nested.end(),
                                       [](const NestPlacement& n) { return n.page >= 0; });

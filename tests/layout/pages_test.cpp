@@ -1076,6 +1076,74 @@ TEST(LayoutNesting, ThreeOrdersNeverLoseToOne) {
 // Half rings (arcs packed by rectangles leave their insides empty): nesting keeps the
 // spacing between any two pieces, measured exactly on their triangles and tab flaps, and never
 // needs more pages than the rectangle packer; on arcs it needs fewer.
+// Six regions of a model, each a large piece (100 x 120 mm) glued to two small ones
+// (40 x 50 mm), given region by region: largest first puts the large pieces two to a page and
+// the small ones after them, mostly away from their partner; the fill in the given order, in
+// runs of half a page, puts every small piece on its partner's page, on as many pages. Without
+// neighbours it is not tried; on random shapes it never costs a page or parts neighbours.
+TEST(LayoutNesting, PiecesGluedToEachOtherStayOnOnePageWhereThatCostsNoPage) {
+  using layout_internal::NestOptions;
+  using layout_internal::NestShape;
+  auto rectangle = [](double w, double h) {
+    NestShape shape;
+    shape.convex.push_back({Vec2(0, 0), Vec2(w, 0), Vec2(w, h), Vec2(0, h)});
+    return shape;
+  };
+  const Vec2 area(190, 277);
+  std::vector<NestShape> shapes;
+  NestOptions options;
+  options.rotations = 4;
+  options.cell_mm = 1.0;
+  for (int region = 0; region < 6; ++region) {
+    const int big = static_cast<int>(shapes.size());
+    shapes.push_back(rectangle(100, 120));
+    for (int k = 0; k < 2; ++k) {
+      options.neighbours.push_back({big, static_cast<int>(shapes.size())});
+      shapes.push_back(rectangle(40, 50));
+    }
+  }
+  auto together = [&](const std::vector<layout_internal::NestPlacement>& placements) {
+    int count = 0;
+    for (const auto& [a, b] : options.neighbours) count += placements[a].page == placements[b].page;
+    return count;
+  };
+  NestOptions plain = options;
+  plain.grouped = false;
+  int pages_plain = 0, pages_grouped = 0;
+  const auto apart = layout_internal::nest_shapes(shapes, area, plain, &pages_plain);
+  const auto near = layout_internal::nest_shapes(shapes, area, options, &pages_grouped);
+  EXPECT_EQ(pages_grouped, pages_plain);
+  EXPECT_LT(together(apart), 12);
+  EXPECT_EQ(together(near), 12);
+  std::cout << "[ nesting  ] glued pairs on one page: " << together(apart)
+            << " of 12 largest first, " << together(near) << " in runs\n";
+  // Random shapes glued in a chain: never more pages, never fewer pairs on one page.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> side(20.0, 120.0);
+  for (int round = 0; round < 4; ++round) {
+    std::vector<NestShape> chain;
+    NestOptions glued;
+    glued.rotations = 8;
+    glued.cell_mm = 1.0;
+    for (int k = 0; k < 16; ++k) {
+      chain.push_back(rectangle(side(random), side(random)));
+      if (k > 0) glued.neighbours.push_back({k - 1, k});
+    }
+    NestOptions loose = glued;
+    loose.grouped = false;
+    int p_loose = 0, p_glued = 0;
+    const auto a = layout_internal::nest_shapes(chain, area, loose, &p_loose);
+    const auto b = layout_internal::nest_shapes(chain, area, glued, &p_glued);
+    EXPECT_LE(p_glued, p_loose) << "round " << round;
+    int near_a = 0, near_b = 0;
+    for (const auto& [x, y] : glued.neighbours) {
+      near_a += a[x].page == a[y].page;
+      near_b += b[x].page == b[y].page;
+    }
+    EXPECT_GE(near_b, near_a) << "round " << round;
+  }
+}
+
 double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 d = b - a;
   const double t =
