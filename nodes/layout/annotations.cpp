@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -14,6 +15,18 @@
 
 namespace papercraft::layout_internal {
 namespace {
+
+// The inscribed circle of triangle t of the piece's strip: its centre and radius; none for a
+// triangle whose corners coincide.
+std::optional<std::pair<Vec2, double>> incircle(const StripData& data, int t) {
+  const Triangle& tri = data.strip->triangles[t];
+  const Vec2 &a = data.points[tri[0]], &b = data.points[tri[1]], &c = data.points[tri[2]];
+  const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
+  const double perimeter = la + lb + lc;
+  if (perimeter <= 0) return std::nullopt;
+  return std::pair<Vec2, double>{(la * a + lb * b + lc * c) / perimeter,
+                                 std::abs(cross(b - a, c - a)) / perimeter};
+}
 
 // Where the piece number goes: the incentre of a triangle with (nearly) the largest
 // inscribed circle, the one nearest the piece's centroid; and that circle's radius.
@@ -26,16 +39,15 @@ std::pair<Vec2, double> number_spot(const StripData& data, const Piece& piece) {
   Vec2 centroid = Vec2::Zero();
   double area = 0, largest = 0;
   for (int t : piece.triangles) {
+    const auto circle = incircle(data, t);
+    if (!circle) continue;
     const Triangle& tri = data.strip->triangles[t];
     const Vec2 &a = data.points[tri[0]], &b = data.points[tri[1]], &c = data.points[tri[2]];
-    const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-    const double perimeter = la + lb + lc;
-    if (perimeter <= 0) continue;
     const double twice_area = std::abs(cross(b - a, c - a));
     centroid += twice_area * (a + b + c) / 3.0;
     area += twice_area;
-    candidates.push_back({(la * a + lb * b + lc * c) / perimeter, twice_area / perimeter});
-    largest = std::max(largest, candidates.back().radius);
+    candidates.push_back({circle->first, circle->second});
+    largest = std::max(largest, circle->second);
   }
   if (candidates.empty()) return {data.points[data.strip->triangles[piece.triangles[0]][0]], 0};
   if (area > 0) centroid /= area;
@@ -376,9 +388,23 @@ std::array<Vec2, 4> leader_box(const std::vector<Vec2>& leader) {
   return {leader.front() - n, leader.back() - n, leader.back() + n, leader.front() + n};
 }
 
-void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
-                    const OrientedBox& box, const LayoutOptions& options,
-                    std::vector<std::string>& warnings) {
+namespace {
+
+// What one pass of `place_labels` left: the positions (in the labels it was given) of the
+// labels it kept, in order, and of those printed with no spot clear of other text and lines.
+struct Placement {
+  std::vector<std::size_t> kept;
+  std::vector<std::size_t> crowded;
+  bool number_crowded = false;  // the number found no clear spot either
+  std::size_t misses() const { return crowded.size() + (number_crowded ? 1 : 0); }
+};
+
+// One pass of arrange_labels: the number, then the labels in their order, each taking the
+// first clear spot left by those before it (the number after them, with `number_last`).
+Placement place_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
+                       const OrientedBox& box, const LayoutOptions& options, bool number_last,
+                       std::vector<std::string>& warnings) {
+  Placement placement;
   const PieceShapes shapes = piece_shapes(data, piece);
   const std::vector<std::array<Vec2, 2>> lines = cut_lines(data, piece);
   const double smallest = options.min_text_mm;
@@ -415,73 +441,94 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
   auto fits_outside = [&](const std::array<Vec2, 4>& candidate) {
     return clear(candidate) && beside(candidate);
   };
-  // The number first: at the best spot, shrunk (not below the smallest text) until it lies
-  // clear on the piece; else at the incentres of the other roomiest triangles.
+  // The number (first, unless `number_last`): at the best spot, shrunk (not below the
+  // smallest text) until it lies clear on the piece; else at the incentres of the other
+  // roomiest triangles.
   piece.number = piece_number(data, piece, box, options);
-  std::vector<std::pair<double, Vec2>> spots;  // inscribed radius, incentre
-  for (int t : piece.triangles) {
-    const Triangle& tri = data.strip->triangles[t];
-    const Vec2 &a = data.points[tri[0]], &b = data.points[tri[1]], &c = data.points[tri[2]];
-    const double la = (b - c).norm(), lb = (c - a).norm(), lc = (a - b).norm();
-    const double perimeter = la + lb + lc;
-    if (perimeter <= 0) continue;
-    spots.push_back(
-        {std::abs(cross(b - a, c - a)) / perimeter, (la * a + lb * b + lc * c) / perimeter});
-  }
-  std::stable_sort(spots.begin(), spots.end(),
-                   [](const auto& x, const auto& y) { return x.first > y.first; });
-  if (spots.size() > 40) spots.resize(40);
-  spots.insert(spots.begin(), {0.0, piece.number->position});
-  bool number_placed = false;
-  for (double size = piece.number->size; !number_placed; size -= 0.25) {
-    size = std::max(size, smallest);
-    for (const auto& [radius, centre] : spots) {
-      const auto candidate =
-          text_box(centre, piece.number->direction, size, piece.number->text.size());
-      if (!fits(candidate)) continue;
-      piece.number->position = centre;
-      piece.number->size = size;
-      taken.push_back(candidate);
-      number_placed = true;
-      break;
-    }
-    if (size <= smallest) break;
-  }
-  if (!number_placed) {
-    // Beside the piece: at a gap outside the middle of each of its longest cut edges.
-    std::vector<std::pair<double, std::array<Vec2, 2>>> edges;
-    for (const auto& line : lines) edges.push_back({(line[1] - line[0]).norm(), line});
-    std::stable_sort(edges.begin(), edges.end(),
+  auto place_number = [&] {
+    std::vector<std::pair<double, Vec2>> spots;  // inscribed radius, incentre
+    for (int t : piece.triangles)
+      if (const auto circle = incircle(data, t)) spots.push_back({circle->second, circle->first});
+    std::stable_sort(spots.begin(), spots.end(),
                      [](const auto& x, const auto& y) { return x.first > y.first; });
-    if (edges.size() > 24) edges.resize(24);
-    const double size = std::max(piece.number->size, smallest);
-    for (const auto& [length, line] : edges) {
-      if (number_placed || length <= 0) continue;
-      const Vec2 along = (line[1] - line[0]) / length, middle = 0.5 * (line[0] + line[1]);
-      for (double side : {1.0, -1.0}) {
-        for (double gap : {0.6, 1.5, 3.0}) {
-          const Vec2 centre =
-              middle + side * Vec2(-along.y(), along.x()) * (kHalfLineEm * size + gap);
-          const auto candidate = text_box(centre, along, size, piece.number->text.size());
-          if (!fits_outside(candidate)) continue;
-          piece.number->position = centre;
-          piece.number->direction = along;
-          piece.number->size = size;
-          piece.number->outside = true;
-          taken.push_back(candidate);
-          number_placed = true;
-          break;
+    if (spots.size() > 40) spots.resize(40);
+    spots.insert(spots.begin(), {0.0, piece.number->position});
+    // At the first of `centres` (second of each pair) where it fits at `size`.
+    auto number_at = [&](const std::vector<std::pair<double, Vec2>>& centres, double size) {
+      for (const auto& [order, centre] : centres) {
+        const auto candidate =
+            text_box(centre, piece.number->direction, size, piece.number->text.size());
+        if (!fits(candidate)) continue;
+        piece.number->position = centre;
+        piece.number->size = size;
+        taken.push_back(candidate);
+        return true;
+      }
+      return false;
+    };
+    bool number_placed = false;
+    for (double size = piece.number->size; !number_placed; size -= 0.25) {
+      size = std::max(size, smallest);
+      number_placed = number_at(spots, size);
+      if (size <= smallest) break;
+    }
+    if (!number_placed) {
+      // Anywhere on the piece, at the smallest size: centres on a grid over the piece (1 mm,
+      // coarser on a large piece), nearest the first spot first. A crowded small piece often
+      // has room between its labels that no incentre hits.
+      const Box2& bounds = shapes.bounds;
+      const Vec2 extent = bounds.hi - bounds.lo;
+      const double step = std::max(1.0, std::sqrt(extent.x() * extent.y() / 4000.0));
+      std::vector<std::pair<double, Vec2>> centres;
+      for (double x = bounds.lo.x() + 0.5 * step; x < bounds.hi.x(); x += step)
+        for (double y = bounds.lo.y() + 0.5 * step; y < bounds.hi.y(); y += step)
+          centres.push_back({(Vec2(x, y) - piece.number->position).squaredNorm(), Vec2(x, y)});
+      std::stable_sort(centres.begin(), centres.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      number_placed = number_at(centres, smallest);
+    }
+    if (!number_placed) {
+      // Beside the piece: at a gap outside the middle of each of its longest cut edges.
+      std::vector<std::pair<double, std::array<Vec2, 2>>> edges;
+      for (const auto& line : lines) edges.push_back({(line[1] - line[0]).norm(), line});
+      std::stable_sort(edges.begin(), edges.end(),
+                       [](const auto& x, const auto& y) { return x.first > y.first; });
+      if (edges.size() > 24) edges.resize(24);
+      const double size = std::max(piece.number->size, smallest);
+      for (const auto& [length, line] : edges) {
+        if (number_placed || length <= 0) continue;
+        const Vec2 along = (line[1] - line[0]) / length;
+        for (double fraction : {0.5, 0.25, 0.75}) {
+          const Vec2 middle = line[0] + fraction * (line[1] - line[0]);
+          for (double side : {1.0, -1.0}) {
+            for (double gap : {0.6, 1.5, 3.0, 5.0}) {
+              const Vec2 centre =
+                  middle + side * Vec2(-along.y(), along.x()) * (kHalfLineEm * size + gap);
+              const auto candidate = text_box(centre, along, size, piece.number->text.size());
+              if (!fits_outside(candidate)) continue;
+              piece.number->position = centre;
+              piece.number->direction = along;
+              piece.number->size = size;
+              piece.number->outside = true;
+              taken.push_back(candidate);
+              number_placed = true;
+              break;
+            }
+            if (number_placed) break;
+          }
+          if (number_placed) break;
         }
-        if (number_placed) break;
       }
     }
-  }
-  if (!number_placed) {
-    piece.number->size = std::max(piece.number->size, smallest);
-    taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
-                             piece.number->text.size()));
-    warnings.push_back("piece " + piece.name + ": no room for its number clear of the cut line");
-  }
+    if (!number_placed) {
+      piece.number->size = std::max(piece.number->size, smallest);
+      taken.push_back(text_box(piece.number->position, piece.number->direction, piece.number->size,
+                               piece.number->text.size()));
+      warnings.push_back("piece " + piece.name + ": no room for its number clear of the cut line");
+      placement.number_crowded = true;
+    }
+  };
+  if (!number_last) place_number();
   // A point `at` mm along `chain` (and the direction of its edge there).
   auto chain_point = [&](const Chain& chain, double at, Vec2* direction) -> std::optional<Vec2> {
     const auto& loop = piece.loops[chain.loop];
@@ -885,23 +932,163 @@ void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain
       clear_spot[n] = 0;
     }
   }
+  if (number_last) place_number();
   // A side of a slit that found no clear spot, where the other side found one, or where the
   // other found none either and comes first: the other names the slit alone.
   for (std::size_t m = 0; m < piece.labels.size(); ++m) {
     if (clear_spot[m] || piece.labels[m].chain < 0) continue;
     for (std::size_t n = 0; n < piece.labels.size() && printed[m]; ++n)
       if (printed[n] && (clear_spot[n] || n < m) && slit_twins(n, m)) printed[m] = 0;
-    if (printed[m])
+    if (printed[m]) {
       warnings.push_back("piece " + piece.name + ": label " + piece.labels[m].text +
                          " finds no spot clear of other text and lines");
+      placement.crowded.push_back(m);
+    }
   }
   std::size_t kept = 0;
   for (std::size_t n = 0; n < piece.labels.size(); ++n)
     if (printed[n]) {
       if (kept != n) piece.labels[kept] = std::move(piece.labels[n]);
+      placement.kept.push_back(n);
       ++kept;
     }
   piece.labels.resize(kept);
+  return placement;
+}
+
+}  // namespace
+
+namespace {
+
+// Everything arrange_labels reads of a piece, its strip and its chains, byte for byte.
+std::string label_key(const StripData& data, const Piece& piece, const std::vector<Chain>& chains,
+                      const OrientedBox& box) {
+  std::string key;
+  auto put = [&key](const auto& value) {
+    key.append(reinterpret_cast<const char*>(&value), sizeof(value));
+  };
+  auto put_text = [&](const std::string& text) {
+    put(text.size());
+    key += text;
+  };
+  auto put_points = [&](const std::vector<Vec2>& points) {
+    put(points.size());
+    for (const Vec2& q : points) put(q.x()), put(q.y());
+  };
+  put(box.angle), put(box.min.x()), put(box.min.y()), put(box.size.x()), put(box.size.y());
+  // The name by its length only: a split before this piece renumbers it, and its number
+  // takes the same room at the same length.
+  put(piece.strip), put(piece.joint), put(piece.name.size());
+  put(piece.triangles.size());
+  for (int t : piece.triangles) {
+    put(t);
+    for (int v : data.strip->triangles[t]) put(data.points[v].x()), put(data.points[v].y());
+  }
+  put(piece.loops.size());
+  for (const auto& loop : piece.loops) {
+    put(loop.size());
+    for (const PieceEdge& e : loop) {
+      put(e.v0), put(e.v1), put(e.kind), put(e.flap), put(e.flap_first);
+      put_text(e.label);
+      put_text(e.printed);
+    }
+  }
+  put(piece.flaps.size());
+  for (const Flap& flap : piece.flaps) {
+    put_points(flap.base);
+    put_points(flap.outer);
+    put(flap.tab);
+  }
+  put(piece.tabs.size());
+  for (const PieceTab& tab : piece.tabs) {
+    put_text(tab.label);
+    put(tab.flaps.size());
+    for (int f : tab.flaps) put(f);
+  }
+  put(piece.labels.size());
+  for (const PieceLabel& label : piece.labels) {
+    put_text(label.text);
+    put(label.position.x()), put(label.position.y()), put(label.direction.x());
+    put(label.direction.y()), put(label.size), put(label.chain >= 0), put(label.outside);
+    put_points(label.leader);
+    if (label.chain < 0) continue;
+    const Chain& chain = chains[label.chain];
+    put(chain.loop), put(chain.start), put(chain.count), put(chain.closed);
+  }
+  return key;
+}
+
+}  // namespace
+
+void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
+                    const OrientedBox& box, const LayoutOptions& options,
+                    std::vector<std::string>& warnings, LabelCache* cache) {
+  std::string key;
+  if (cache) {
+    key = label_key(data, piece, chains, box);
+    if (const auto found = cache->entries.find(key); found != cache->entries.end()) {
+      const LabelCache::Entry& entry = found->second;
+      // The chains by their index in this layout's list (the same chains, numbered anew
+      // where pieces before were split).
+      std::vector<PieceLabel> labels = entry.labels;
+      for (std::size_t k = 0; k < labels.size(); ++k)
+        labels[k].chain = piece.labels[entry.kept[k]].chain;
+      piece.labels = std::move(labels);
+      piece.number = entry.number;
+      if (piece.number) piece.number->text = piece.name;
+      // The notes name the piece as it was named then.
+      const std::string then = "piece " + entry.name + ":", now = "piece " + piece.name + ":";
+      for (const std::string& note : entry.warnings)
+        warnings.push_back(note.rfind(then, 0) == 0 ? now + note.substr(then.size()) : note);
+      return;
+    }
+  }
+  const Piece before = piece;
+  std::vector<std::string> notes;
+  Placement best = place_labels(data, piece, chains, box, options, false, notes);
+  std::vector<std::size_t> kept = best.kept;  // positions in before.labels of those kept
+  // Labels that found no clear spot take the spots first in another pass, the others fill in
+  // around them; a crowded corner often has room for all where the order was the trouble. Up
+  // to three more passes, each putting the labels crowded in any pass before first; then one
+  // with the number placed after the labels (it has more places to go than a label). The pass
+  // with the fewest labels and numbers left without a clear spot is kept (the first on a tie).
+  std::vector<std::size_t> first;  // positions in before.labels, crowded in some pass
+  std::vector<std::size_t> order(before.labels.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  Placement last = best;  // the pass before, in `order`
+  for (int pass = 0; pass < 4 && best.misses() > 0; ++pass) {
+    const bool number_last = pass == 3;
+    for (std::size_t m : last.crowded)
+      if (std::find(first.begin(), first.end(), order[m]) == first.end()) first.push_back(order[m]);
+    std::vector<std::size_t> next = first;
+    for (std::size_t n = 0; n < before.labels.size(); ++n)
+      if (std::find(first.begin(), first.end(), n) == first.end()) next.push_back(n);
+    Piece retry = before;
+    for (std::size_t k = 0; k < next.size(); ++k) retry.labels[k] = before.labels[next[k]];
+    std::vector<std::string> retry_notes;
+    last = place_labels(data, retry, chains, box, options, number_last, retry_notes);
+    order = std::move(next);
+    if (last.misses() >= best.misses()) continue;
+    // Back in the labels' own order.
+    std::vector<std::pair<std::size_t, PieceLabel>> sorted;
+    for (std::size_t k = 0; k < last.kept.size(); ++k)
+      sorted.emplace_back(order[last.kept[k]], std::move(retry.labels[k]));
+    std::sort(sorted.begin(), sorted.end(),
+              [](const auto& x, const auto& y) { return x.first < y.first; });
+    retry.labels.clear();
+    kept.clear();
+    for (auto& [n, label] : sorted) {
+      retry.labels.push_back(std::move(label));
+      kept.push_back(n);
+    }
+    best = last;
+    piece = std::move(retry);
+    notes = std::move(retry_notes);
+  }
+  warnings.insert(warnings.end(), notes.begin(), notes.end());
+  if (cache)
+    cache->entries[std::move(key)] = {piece.name, piece.labels, std::move(kept), piece.number,
+                                      std::move(notes)};
 }
 
 std::vector<std::array<Vec2, 4>> text_boxes(const Piece& piece) {

@@ -2,7 +2,9 @@
 // What is printed on a piece besides its outline: seam labels, the piece number, fold lines
 // and alignment marks where seams meet.
 
+#include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/pattern.h"
@@ -33,6 +35,20 @@ std::vector<FoldLine> piece_folds(const StripData& data, const Piece& piece,
 PieceLabel piece_number(const StripData& data, const Piece& piece, const OrientedBox& box,
                         const LayoutOptions& options);
 
+/// The labels and number arrange_labels gave each piece it saw, by everything they depend on
+/// (for one LayoutOptions; the piece's name by its length only).
+class LabelCache {
+ public:
+  struct Entry {
+    std::string name;  // the piece's name then (the key has its length only)
+    std::vector<PieceLabel> labels;
+    std::vector<std::size_t> kept;  // the position of each of `labels` among those given
+    std::optional<PieceLabel> number;
+    std::vector<std::string> warnings;
+  };
+  std::unordered_map<std::string, Entry> entries;
+};
+
 /// Sets the piece number (shrunk, not below min_text_mm, until it lies clear) and moves each
 /// seam label along its chain (and shrinks it, down to min_text_mm) until its text box lies
 /// on the piece, crosses no cut line (of the piece or its tabs) and is clear of the number
@@ -40,9 +56,16 @@ PieceLabel piece_number(const StripData& data, const Piece& piece, const Oriente
 /// seam off the piece; else farther around the seam's middle, joined to it by a leader line
 /// (PieceLabel::leader); a label that finds no such spot keeps its first one and is named in
 /// `warnings`.
+///
+/// Where one pass leaves labels (or the number) with no clear spot, it tries again with those
+/// placed first, and with the number after the labels, and keeps the pass that leaves fewest.
+///
+/// With a `cache`, a piece arranged before with the same options (the same triangles, corners,
+/// loops, tabs, labels, chains and box) gets that result back, warnings included: a layout
+/// tried several ways arranges each piece once.
 void arrange_labels(const StripData& data, Piece& piece, const std::vector<Chain>& chains,
                     const OrientedBox& box, const LayoutOptions& options,
-                    std::vector<std::string>& warnings);
+                    std::vector<std::string>& warnings, LabelCache* cache = nullptr);
 
 /// Half the width of a label's leader line as the layout keeps it clear (mm).
 inline constexpr double kLeaderHalfWidth = 0.15;

@@ -37,12 +37,13 @@ using layout_internal::chain_length;
 using layout_internal::clear_of_text;
 using layout_internal::convex_hull;
 using layout_internal::convex_overlap;
-using layout_internal::leader_boxes;
 using layout_internal::cross;
 using layout_internal::Flap;
 using layout_internal::format_mm;
 using layout_internal::hull_fits;
 using layout_internal::kDegree;
+using layout_internal::LabelCache;
+using layout_internal::leader_boxes;
 using layout_internal::match_seam_edges;
 using layout_internal::nest_shapes;
 using layout_internal::NestOptions;
@@ -57,7 +58,6 @@ using layout_internal::piece_folds;
 using layout_internal::piece_loops;
 using layout_internal::piece_name;
 using layout_internal::piece_number;
-using layout_internal::text_box;
 using layout_internal::piece_points;
 using layout_internal::PieceEdge;
 using layout_internal::PieceLabel;
@@ -70,6 +70,7 @@ using layout_internal::signed_area;
 using layout_internal::split_to_fit;
 using layout_internal::strip_name;
 using layout_internal::StripData;
+using layout_internal::text_box;
 using layout_internal::text_boxes;
 using layout_internal::tightest_box;
 using layout_internal::validate_strip;
@@ -524,13 +525,15 @@ enum class SplitLong { None, Fitting, All, Bends };
 // marks by strip index, where given); *long_strips counts them.
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
                           SplitLong split_long, LongStrips* long_strips,
-                          const std::vector<char>* chosen = nullptr);
+                          const std::vector<char>* chosen = nullptr, LabelCache* labels = nullptr);
 
 }  // namespace
 
 PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
   LongStrips whole;
-  PatternLayout layout = layout_with(strips, options, SplitLong::None, &whole);
+  // The pieces the tries share (most of them) get their labels arranged once.
+  LabelCache labels;
+  PatternLayout layout = layout_with(strips, options, SplitLong::None, &whole, nullptr, &labels);
   // No long thin strip is found unless nesting with split_long_strips.
   if (layout.pages.size() < 2 || whole.found + whole.oversize == 0) return layout;
   // Laid out again with the long thin strips that fit split in half pages, then also those
@@ -552,7 +555,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   // pieces; says whether it saved pages at too high a cost.
   auto too_costly = [&](SplitLong mode, const std::vector<char>* chosen) {
     LongStrips parts;
-    PatternLayout halves = layout_with(strips, options, mode, &parts, chosen);
+    PatternLayout halves = layout_with(strips, options, mode, &parts, chosen, &labels);
     const int saved = static_cast<int>(best.pages.size()) - static_cast<int>(halves.pages.size());
     const int added = pieces_of(halves) - unsplit_pieces;
     if (parts.split == 0 || saved <= 0) return false;
@@ -599,7 +602,7 @@ namespace {
 
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
                           SplitLong split_long, LongStrips* long_strips,
-                          const std::vector<char>* chosen) {
+                          const std::vector<char>* chosen, LabelCache* labels) {
   *long_strips = LongStrips();
   Prepared p = prepare(strips, options);
   PatternLayout layout;
@@ -745,7 +748,7 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
   for (int i = 0; i < static_cast<int>(pieces.size()); ++i) {
     orientations.push_back(orient_piece(p.strips[pieces[i].strip], pieces[i], p.area));
     arrange_labels(p.strips[pieces[i].strip], pieces[i], chains, orientations.back().box, options,
-                   warnings);
+                   warnings, labels);
     if (pieces[i].joint && pieces[i].number) {
       // The seam's label at the middle of its joining strip, on the centre line.
       const auto& points = p.strips[pieces[i].strip].points;
