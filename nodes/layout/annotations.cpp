@@ -570,6 +570,7 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
   };
   std::vector<char> printed(piece.labels.size(), 1);
   std::vector<char> clear_spot(piece.labels.size(), 1);
+  std::vector<char> detached(piece.labels.size(), 0);  // clear, but near its seam only
   for (std::size_t n = 0; n < piece.labels.size(); ++n) {
     PieceLabel& label = piece.labels[n];
     if (label.chain < 0) continue;
@@ -893,6 +894,54 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
         }
     }
     if (!placed) {
+      // No spot a leader line can reach (a seam in a knot of cut lines, where several short
+      // seams meet at one corner): the nearest spot within kNear of the seam, on the piece or
+      // beside it, clear of other text and crossed by no line, with no leader. Read next to
+      // its seam, the text names it; one over another text names nothing.
+      constexpr double kNear = 12.0, kStep = 0.75;
+      std::vector<std::pair<double, Vec2>> near;   // distance to the seam, centre
+      std::vector<std::pair<Vec2, Vec2>> samples;  // points along the seam, direction there
+      Box2 around;
+      for (int k = 0; k <= 8; ++k) {
+        Vec2 along;
+        const Vec2 at = point_at(k / 8.0 * total, &along);
+        samples.push_back({at, along});
+        around.add(at);
+      }
+      for (double x = around.lo.x() - kNear; x <= around.hi.x() + kNear; x += kStep)
+        for (double y = around.lo.y() - kNear; y <= around.hi.y() + kNear; y += kStep) {
+          double nearest = std::numeric_limits<double>::infinity();
+          for (const auto& sample : samples)
+            nearest = std::min(nearest, (Vec2(x, y) - sample.first).norm());
+          if (nearest <= kNear) near.push_back({nearest, Vec2(x, y)});
+        }
+      std::stable_sort(near.begin(), near.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (const auto& [distance, centre] : near) {
+        if (placed) break;
+        Vec2 along = samples.front().second;
+        double closest = std::numeric_limits<double>::infinity();
+        for (const auto& sample : samples)
+          if ((centre - sample.first).norm() < closest)
+            closest = (centre - sample.first).norm(), along = sample.second;
+        for (const Vec2& direction : {along, Vec2(-along.y(), along.x())}) {
+          const auto candidate = text_box(centre, direction, smallest, label.text.size());
+          const bool on = fits(candidate);
+          if (!on && !fits_outside(candidate)) continue;
+          label.position = centre;
+          label.direction = direction;
+          label.size = smallest;
+          label.outside = !on;
+          label.leader.clear();
+          taken.push_back(candidate);
+          placed = true;
+          clear_spot[n] = 0;
+          detached[n] = 1;
+          break;
+        }
+      }
+    }
+    if (!placed) {
       // No clear spot: the spot along the seam, on the piece or beside it and crossed by no cut
       // line, whose text meets the fewest other texts (the first spot where none meets fewer).
       auto crowding = [&](const std::array<Vec2, 4>& candidate) {
@@ -941,7 +990,9 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
       if (printed[n] && (clear_spot[n] || n < m) && slit_twins(n, m)) printed[m] = 0;
     if (printed[m]) {
       warnings.push_back("piece " + piece.name + ": label " + piece.labels[m].text +
-                         " finds no spot clear of other text and lines");
+                         (detached[m] ? " finds no spot clear of other text and lines that a "
+                                        "leader line reaches; printed near its seam"
+                                      : " finds no spot clear of other text and lines"));
       placement.crowded.push_back(m);
     }
   }
