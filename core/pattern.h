@@ -103,7 +103,10 @@ struct PlacedPiece {
   /// The piece's own vertex arrays: page mm, the strip vertex each came from, uvs (empty
   /// if the strip has none) and triangles indexing `vertices`.
   std::vector<Vec2> vertices;
+  /// -1 for a point layout_pages added where it divided the strip's triangles (a coarse mesh
+  /// printed larger than a page); `points3d` has every vertex's 3D point (model units).
   std::vector<int> strip_vertex;
+  std::vector<Vec3> points3d;
   std::vector<Vec2> uvs;
   std::vector<Triangle> triangles;
   /// Boundary loops of the piece without tabs (outer loop first).

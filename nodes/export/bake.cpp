@@ -303,9 +303,12 @@ std::vector<BakedImage> bake_page(const Page& page, const std::map<int, const Fl
     for (const Triangle& t : piece.triangles) {
       const std::array<Vec2, 3> corners{piece.vertices[t[0]], piece.vertices[t[1]],
                                         piece.vertices[t[2]]};
-      const Vec3 &pa = strip.vertices3d[piece.strip_vertex[t[0]]],
-                 &pb = strip.vertices3d[piece.strip_vertex[t[1]]],
-                 &pc = strip.vertices3d[piece.strip_vertex[t[2]]];
+      // points3d: every vertex's point (where a layout added points, no strip vertex has it).
+      const bool own = piece.points3d.size() == piece.vertices.size();
+      auto point = [&](int v) -> const Vec3& {
+        return own ? piece.points3d[v] : strip.vertices3d[piece.strip_vertex[v]];
+      };
+      const Vec3 &pa = point(t[0]), &pb = point(t[1]), &pc = point(t[2]);
       fill_triangle(
           image, corners,
           [&](double wa, double wb, double wc) { return Vec3(wa * pa + wb * pb + wc * pc); },

@@ -181,7 +181,11 @@ std::vector<GuidePiece> guide_pieces(const PatternLayout& layout,
       piece.page = static_cast<int>(page) + 1;
       for (const Triangle& t : placed.triangles) {
         std::array<Vec3, 3> corners;
-        for (int k = 0; k < 3; ++k) corners[k] = it->second->vertices3d[placed.strip_vertex[t[k]]];
+        // points3d: every vertex's point (where a layout added points, no strip vertex has it).
+        const bool own = placed.points3d.size() == placed.vertices.size();
+        for (int k = 0; k < 3; ++k)
+          corners[k] =
+              own ? placed.points3d[t[k]] : it->second->vertices3d[placed.strip_vertex[t[k]]];
         piece.triangles.push_back(corners);
       }
       pieces.push_back(std::move(piece));

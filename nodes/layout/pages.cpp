@@ -17,6 +17,7 @@
 
 #include "core/errors.h"
 #include "nodes/layout/annotations.h"
+#include "nodes/layout/divide_triangles.h"
 #include "nodes/layout/format_mm.h"
 #include "nodes/layout/nesting.h"
 #include "nodes/layout/pieces.h"
@@ -38,6 +39,7 @@ using layout_internal::clear_of_text;
 using layout_internal::convex_hull;
 using layout_internal::convex_overlap;
 using layout_internal::cross;
+using layout_internal::divide_triangles;
 using layout_internal::Flap;
 using layout_internal::format_mm;
 using layout_internal::hull_fits;
@@ -314,6 +316,7 @@ PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const Orie
     if (inserted) {
       placed.vertices.push_back(to_page(data.points[v]));
       placed.strip_vertex.push_back(v);
+      placed.points3d.push_back(strip.vertices3d[v]);
       if (!strip.uvs.empty()) placed.uvs.push_back(strip.uvs[v]);
     }
     return it->second;
@@ -522,18 +525,25 @@ struct LongStrips {
 enum class SplitLong { None, Fitting, All, Bends };
 
 // The layout, long and thin strips split as `split_long` says (of them only those `chosen`
-// marks by strip index, where given); *long_strips counts them.
+// marks by strip index, where given); *long_strips counts them. `divided`: the strips' triangles
+// were divided, and how they are cut (StripData::divided).
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
                           SplitLong split_long, LongStrips* long_strips,
-                          const std::vector<char>* chosen = nullptr, LabelCache* labels = nullptr);
+                          const std::vector<char>* chosen = nullptr, LabelCache* labels = nullptr,
+                          int divided = 0);
 
 }  // namespace
 
-PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
+namespace {
+
+// The tries of layout_pages on strips as they are (see there).
+PatternLayout layout_tries(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
+                           int divided) {
   LongStrips whole;
   // The pieces the tries share (most of them) get their labels arranged once.
   LabelCache labels;
-  PatternLayout layout = layout_with(strips, options, SplitLong::None, &whole, nullptr, &labels);
+  PatternLayout layout =
+      layout_with(strips, options, SplitLong::None, &whole, nullptr, &labels, divided);
   // No long thin strip is found unless nesting with split_long_strips.
   if (layout.pages.size() < 2 || whole.found + whole.oversize == 0) return layout;
   // Laid out again with the long thin strips that fit split in half pages, then also those
@@ -555,7 +565,7 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   // pieces; says whether it saved pages at too high a cost.
   auto too_costly = [&](SplitLong mode, const std::vector<char>* chosen) {
     LongStrips parts;
-    PatternLayout halves = layout_with(strips, options, mode, &parts, chosen, &labels);
+    PatternLayout halves = layout_with(strips, options, mode, &parts, chosen, &labels, divided);
     const int saved = static_cast<int>(best.pages.size()) - static_cast<int>(halves.pages.size());
     const int added = pieces_of(halves) - unsplit_pieces;
     if (parts.split == 0 || saved <= 0) return false;
@@ -598,13 +608,96 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
   return best;
 }
 
+// Triangles divided at most into this many, all strips together.
+constexpr std::size_t kMostDividedTriangles = 6000;
+
+// How many parts each edge of every triangle is divided into before the layout: where some
+// strip fits no page and has triangles with an edge longer than a third of the page's shorter
+// side (a coarse mesh printed large), enough parts that none is, within
+// kMostDividedTriangles; else 1.
+int divisions(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
+  if (strips.empty() || options.packing != PackingMethod::Nest) return 1;
+  const Prepared p = prepare(strips, options);
+  bool all_fit = true;
+  double longest = 0;
+  std::size_t triangles = 0;
+  for (const StripData& data : p.strips) {
+    if (!data.triangles.empty() && !strip_fits(data, p)) all_fit = false;
+    triangles += data.triangles.size();
+    for (int t : data.triangles) {
+      const Triangle& tri = data.strip->triangles[t];
+      for (int i = 0; i < 3; ++i)
+        longest = std::max(longest, (data.points[tri[(i + 1) % 3]] - data.points[tri[i]]).norm());
+    }
+  }
+  if (all_fit || triangles == 0) return 1;
+  const double part = (std::min(p.area.x(), p.area.y()) - 2 * p.reserve) / 3.0;
+  if (part <= 0) return 1;
+  const int wanted = static_cast<int>(std::ceil(longest / part));
+  const int most =
+      static_cast<int>(std::floor(std::sqrt(double(kMostDividedTriangles) / double(triangles))));
+  const int n = std::min(wanted, most);
+  return n >= 2 ? n : 1;
+}
+
+}  // namespace
+
+PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
+  PatternLayout layout = layout_tries(strips, options, 0);
+  const int n = divisions(strips, options);
+  if (n <= 1) return layout;
+  // A strip no page holds, of triangles too large to cut it well at their edges: laid out
+  // again with every triangle divided (the same surface), kept where that saves pages.
+  // Cut across the long axis only, or into slabs first (where wider than the page is long):
+  // the better of the two (fewer pieces overflowing, then fewer pages).
+  const std::vector<FlatStrip> parts = divide_triangles(strips, n);
+  PatternLayout divided = layout_tries(parts, options, 1);
+  PatternLayout slabs = layout_tries(parts, options, 2);
+  // Kept where fewer pieces overflow their page, or as many and every page it saves costs at
+  // most splits_per_page more pieces (as for the long thin strips).
+  auto overflowing = [](const PatternLayout& l) {
+    return std::count_if(l.warnings.begin(), l.warnings.end(), [](const std::string& note) {
+      return note.find(" overflows its page") != std::string::npos;
+    });
+  };
+  auto cost = [&](const PatternLayout& l) {
+    std::size_t pieces = 0;
+    for (const Page& page : l.pages) pieces += page.pieces.size();
+    return std::make_pair(
+        overflowing(l),
+        l.pages.size() * static_cast<std::size_t>(options.splits_per_page) + pieces);
+  };
+  if (cost(slabs) < cost(divided)) divided = std::move(slabs);
+  const auto over = overflowing(layout), over_divided = overflowing(divided);
+  if (!(cost(divided) < cost(layout)) ||
+      (over_divided == over && divided.pages.size() >= layout.pages.size()))
+    return layout;
+  std::unordered_map<int, std::size_t> vertices;  // strip id -> its vertex count
+  for (const FlatStrip& strip : strips) vertices[strip.id] = strip.vertices3d.size();
+  for (Page& page : divided.pages)
+    for (PlacedPiece& piece : page.pieces) {
+      const auto it = vertices.find(piece.strip_id);
+      for (int& v : piece.strip_vertex)
+        if (it == vertices.end() || v >= static_cast<int>(it->second)) v = -1;
+    }
+  divided.warnings.push_back(
+      "triangles divided in " + std::to_string(n * n) +
+      " to cut strips larger than a page across them: " + std::to_string(divided.pages.size()) +
+      " pages instead of " + std::to_string(layout.pages.size()) +
+      (over > over_divided
+           ? ", and " + std::to_string(over - over_divided) + " fewer pieces overflow their page"
+           : ""));
+  return divided;
+}
+
 namespace {
 
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
                           SplitLong split_long, LongStrips* long_strips,
-                          const std::vector<char>* chosen, LabelCache* labels) {
+                          const std::vector<char>* chosen, LabelCache* labels, int divided) {
   *long_strips = LongStrips();
   Prepared p = prepare(strips, options);
+  for (StripData& data : p.strips) data.divided = divided;
   PatternLayout layout;
   layout.page = options.page;
   layout.margin_mm = options.margin_mm;

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <limits>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -157,9 +158,61 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
       done.push_back(std::move(set));
       continue;
     }
-    std::vector<int> from_first = dijkstra_order(data, set, set.front());
     std::vector<double> distance;
-    std::vector<int> order = dijkstra_order(data, set, from_first.back(), &distance);
+    std::vector<int> order;
+    std::vector<char> clean;  // divided: a cut may be made before order[i]
+    if (data.divided) {
+      // Across the long axis of the set's tightest rectangle: a straight cut where the
+      // divided triangles have edges across it, a short zigzag where not.
+      bool unused = false;
+      const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
+      // Wider than the page is long: first cut along the long axis into slabs that are not.
+      const double longest = std::max(width, height);
+      const bool slabs = data.divided == 2 && box.size.y() > longest;
+      const Vec2 axis = slabs ? Vec2(-std::sin(box.angle), std::cos(box.angle))
+                              : Vec2(std::cos(box.angle), std::sin(box.angle));
+      // By the farthest corner along the axis (then the centroid): the two triangles of a
+      // grid cell come together, and a cut is made only between triangles whose farthest
+      // corners differ, so it runs along the cells' edges, not through their diagonals.
+      std::vector<std::tuple<double, double, int>> along;
+      double start = std::numeric_limits<double>::infinity();
+      for (int t : set) {
+        const Triangle& tri = data.strip->triangles[t];
+        double farthest = -std::numeric_limits<double>::infinity(), centroid = 0;
+        for (int k = 0; k < 3; ++k) {
+          farthest = std::max(farthest, axis.dot(data.points[tri[k]]));
+          centroid += axis.dot(data.points[tri[k]]) / 3.0;
+          start = std::min(start, axis.dot(data.points[tri[k]]));
+        }
+        along.push_back({farthest, centroid, t});
+      }
+      std::sort(along.begin(), along.end());
+      for (std::size_t i = 0; i < along.size(); ++i) {
+        order.push_back(std::get<2>(along[i]));
+        distance.push_back(std::get<0>(along[i]) - std::get<0>(along.front()));
+        clean.push_back(i == 0 || std::get<0>(along[i]) > std::get<0>(along[i - 1]) + 1e-6);
+      }
+      if (slabs) {
+        // The first of k equal slabs (k as few as keep each within the page's long side),
+        // cut at the first clean position past it; it and the rest are split again.
+        const double wide = box.size.y();
+        const double slab = wide / std::ceil(wide / longest);
+        std::size_t cut = 1;
+        while (cut < order.size() &&
+               !(clean[cut] && std::get<0>(along[cut - 1]) - start >= slab - 1e-6))
+          ++cut;
+        if (cut < order.size()) {
+          std::vector<int> head(order.begin(), order.begin() + cut);
+          cut_off(data, set, head, used_labels, work);
+          std::sort(head.begin(), head.end());
+          for (std::vector<int>& part : components(data, head)) work.push_back(std::move(part));
+          continue;
+        }
+      }
+    } else {
+      std::vector<int> from_first = dijkstra_order(data, set, set.front());
+      order = dijkstra_order(data, set, from_first.back(), &distance);
+    }
     // The longest prefix of order[begin..] that fits (at least one triangle).
     auto longest_fitting = [&](std::size_t begin) {
       std::size_t lo = begin + 1, hi = order.size();
@@ -198,7 +251,20 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
           components(data, std::vector<int>(order.begin() + cut, order.end())).size() == 1)
         lo = cut;
     }
+    if (data.divided) {
+      std::size_t at = lo;
+      while (at > 1 && !clean[at]) --at;
+      if (clean[at]) lo = at;
+    }
     std::vector<int> head(order.begin(), order.begin() + lo);
+    if (data.divided) {
+      // A cut across a bent set may leave its head in parts: the part at its start is cut off.
+      for (std::vector<int>& part : components(data, head))
+        if (std::binary_search(part.begin(), part.end(), order.front())) {
+          head = std::move(part);
+          break;
+        }
+    }
     cut_off(data, set, head, used_labels, work);
     std::sort(head.begin(), head.end());
     done.push_back(std::move(head));

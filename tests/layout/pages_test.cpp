@@ -17,6 +17,7 @@
 #include "core/edge_map.h"
 #include "core/errors.h"
 #include "core/flat_boundary.h"
+#include "nodes/layout/divide_triangles.h"
 #include "nodes/layout/nesting.h"
 #include "nodes/layout/polygon_2d.h"
 #include "nodes/layout/split_to_fit.h"
@@ -155,6 +156,7 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
   std::map<std::string, int> label_count, tab_count, joint_count;
   std::set<std::string> self_seams;  // seams of a piece with itself
   std::map<int, std::size_t> triangles_per_strip;
+  std::map<int, double> placed_area;  // page mm^2
 
   for (std::size_t p = 0; p < layout.pages.size(); ++p) {
     const Page& page = layout.pages[p];
@@ -177,19 +179,29 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
 
       // An isometric copy at mm_per_unit, never mirrored (counter-clockwise as seen on
       // the page, whose y axis points down).
+      // Where the layout divided the strip's triangles, the points it added have no strip
+      // vertex (-1) but their 3D point.
+      ASSERT_EQ(piece.points3d.size(), piece.vertices.size());
+      ASSERT_EQ(piece.strip_vertex.size(), piece.vertices.size());
+      for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
+        if (piece.strip_vertex[v] < 0) continue;
+        EXPECT_NEAR((piece.points3d[v] - strip.vertices3d[piece.strip_vertex[v]]).norm(), 0.0,
+                    1e-12);
+        EXPECT_NEAR(
+            (piece.transform.apply(strip.vertices2d[piece.strip_vertex[v]]) - piece.vertices[v])
+                .norm(),
+            0.0, 1e-9);
+      }
       for (const Triangle& t : piece.triangles) {
+        placed_area[piece.strip_id] +=
+            0.5 * std::abs(cross(piece.vertices[t[1]] - piece.vertices[t[0]],
+                                 piece.vertices[t[2]] - piece.vertices[t[0]]));
         for (int i = 0; i < 3; ++i) {
           const int a = t[i], b = t[(i + 1) % 3];
           const double page_length = (piece.vertices[a] - piece.vertices[b]).norm();
-          const double model_length =
-              (strip.vertices3d[piece.strip_vertex[a]] - strip.vertices3d[piece.strip_vertex[b]])
-                  .norm();
+          const double model_length = (piece.points3d[a] - piece.points3d[b]).norm();
           EXPECT_NEAR(page_length, model_length * layout.mm_per_unit,
                       1e-9 * std::max(1.0, page_length));
-          EXPECT_NEAR(
-              (piece.transform.apply(strip.vertices2d[piece.strip_vertex[a]]) - piece.vertices[a])
-                  .norm(),
-              0.0, 1e-9);
         }
         EXPECT_LE(cross(piece.vertices[t[1]] - piece.vertices[t[0]],
                         piece.vertices[t[2]] - piece.vertices[t[0]]),
@@ -337,7 +349,18 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
             }
   }
   // Every strip is laid out completely.
-  for (const FlatStrip& s : strips) EXPECT_EQ(triangles_per_strip[s.id], s.triangles.size());
+  bool divided = false;
+  for (const std::string& note : layout.warnings)
+    divided = divided || note.rfind("triangles divided", 0) == 0;
+  for (const FlatStrip& s : strips) {
+    if (!divided) EXPECT_EQ(triangles_per_strip[s.id], s.triangles.size());
+    double area = 0;
+    for (const Triangle& t : s.triangles)
+      area += 0.5 * std::abs(cross(s.vertices2d[t[1]] - s.vertices2d[t[0]],
+                                   s.vertices2d[t[2]] - s.vertices2d[t[0]]));
+    area *= layout.mm_per_unit * layout.mm_per_unit;
+    EXPECT_NEAR(placed_area[s.id], area, 1e-9 * std::max(1.0, area)) << "strip " << s.id;
+  }
   // Matching labels on both sides of every seam, one tab per seam. A seam split with its
   // strip is printed as several (L.1, L.2, ...).
   std::set<std::string> input_labels;
@@ -1275,11 +1298,89 @@ TEST(LayoutPages, OversizedTriangleOverflowsWithWarning) {
   const std::vector<FlatStrip> strips = {cell_strip(0, 1, 1, 400, 400)};
   LayoutOptions options;
   options.scale = 1;
+  options.packing = PackingMethod::MaxRects;  // nesting divides the triangles (below)
   const PatternLayout layout = layout_pages(strips, options);
   EXPECT_EQ(layout.pages.size(), 2u);  // split into its two triangles, each alone
   bool overflow = false;
   for (const std::string& w : layout.warnings) overflow |= w.find("overflows") != std::string::npos;
   EXPECT_TRUE(overflow);
+}
+
+// The same square with nesting: its triangles are divided (each edge in n equal parts) and the
+// strip cut across them into pieces that fit the page, along the divided cells' edges: no piece
+// overflows, each is a rectangle (4 corners), and the surface is laid out whole.
+TEST(LayoutPages, TriangleLargerThanThePageIsCutAcrossItsDividedTriangles) {
+  const std::vector<FlatStrip> strips = {cell_strip(0, 1, 1, 400, 400)};
+  LayoutOptions options;
+  options.scale = 1;
+  const PatternLayout layout = layout_pages(strips, options);
+  bool divided = false;
+  for (const std::string& w : layout.warnings) {
+    EXPECT_EQ(w.find("overflows"), std::string::npos) << w;
+    divided = divided || w.rfind("triangles divided", 0) == 0;
+  }
+  EXPECT_TRUE(divided);
+  expect_valid_layout(layout, strips, options);
+  int pieces = 0;
+  for (const Page& page : layout.pages)
+    for (const PlacedPiece& piece : page.pieces) {
+      ++pieces;
+      ASSERT_EQ(piece.outline.size(), 1u);
+      // Corners: outline points where the direction turns.
+      const auto& loop = piece.outline[0];
+      int corners = 0;
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Vec2 a = loop[(i + loop.size() - 1) % loop.size()], b = loop[i],
+                   c = loop[(i + 1) % loop.size()];
+        corners += std::abs(cross((b - a).normalized(), (c - b).normalized())) > 1e-6;
+      }
+      EXPECT_EQ(corners, 4) << "piece " << piece.name;
+      EXPECT_NE(piece.strip_vertex.end(),
+                std::find(piece.strip_vertex.begin(), piece.strip_vertex.end(), -1));
+    }
+  // 400 x 400 mm on pages of 178 x 256 mm (room for tabs kept): two slabs of 200 x 400 mm,
+  // each cut in three of 133 x 200 mm (10 x 10 cells of 40 mm: cut along cell edges).
+  EXPECT_EQ(pieces, 6);
+  EXPECT_EQ(static_cast<int>(layout.pages.size()), 6);
+}
+
+// Both sides of every seam of divided strips get the same points, and the surface and its flat
+// image are kept: each new triangle is an isometric copy (flat edges as long as 3D ones).
+TEST(LayoutDivide, BothSidesOfEverySeamGetTheSamePoints) {
+  const auto strips = prism_strips(square_footprint(40), 60, 0);
+  for (int n : {1, 2, 3}) {
+    const auto divided = layout_internal::divide_triangles(strips, n);
+    ASSERT_EQ(divided.size(), strips.size());
+    std::map<int, const FlatStrip*> by_id;
+    for (const FlatStrip& s : divided) by_id[s.id] = &s;
+    for (std::size_t k = 0; k < strips.size(); ++k) {
+      const FlatStrip &before = strips[k], &after = divided[k];
+      ASSERT_EQ(after.triangles.size(), before.triangles.size() * n * n);
+      ASSERT_EQ(after.boundary.size(), before.boundary.size() * n);
+      double area_before = 0, area_after = 0;
+      for (const Triangle& t : before.triangles)
+        area_before += 0.5 * cross(before.vertices2d[t[1]] - before.vertices2d[t[0]],
+                                   before.vertices2d[t[2]] - before.vertices2d[t[0]]);
+      for (const Triangle& t : after.triangles) {
+        const double a = 0.5 * cross(after.vertices2d[t[1]] - after.vertices2d[t[0]],
+                                     after.vertices2d[t[2]] - after.vertices2d[t[0]]);
+        EXPECT_GT(a, 0);  // the strip's own orientation
+        area_after += a;
+        for (int i = 0; i < 3; ++i)
+          EXPECT_NEAR((after.vertices2d[t[i]] - after.vertices2d[t[(i + 1) % 3]]).norm(),
+                      (after.vertices3d[t[i]] - after.vertices3d[t[(i + 1) % 3]]).norm(), 1e-9);
+      }
+      EXPECT_NEAR(area_after, area_before, 1e-9 * area_before);
+      for (const BoundaryEdge& e : after.boundary) {
+        if (e.kind != EdgeKind::Seam || e.partner_edge < 0) continue;
+        const FlatStrip& other = *by_id.at(e.neighbour_strip);
+        const BoundaryEdge& partner = other.boundary.at(e.partner_edge);
+        EXPECT_EQ(partner.label, e.label);
+        EXPECT_NEAR((other.vertices3d[partner.v0] - after.vertices3d[e.v1]).norm(), 0, 1e-12);
+        EXPECT_NEAR((other.vertices3d[partner.v1] - after.vertices3d[e.v0]).norm(), 0, 1e-12);
+      }
+    }
+  }
 }
 
 // Cuts that meet near a vertex can leave a triangle many orders of magnitude below the
