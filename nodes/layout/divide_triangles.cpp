@@ -2,6 +2,7 @@
 #include "nodes/layout/divide_triangles.h"
 
 #include <map>
+#include <tuple>
 #include <utility>
 
 namespace papercraft::layout_internal {
@@ -31,7 +32,13 @@ FlatStrip divide(const FlatStrip& strip, int n) {
   auto edge_point = [&](int a, int b, int k) {  // point k of n from a towards b
     if (k == 0) return a;
     if (k == n) return b;
-    const int lo = std::min(a, b), hi = std::max(a, b);
+    // Counted from the end whose 3D point comes first (x, then y, then z): the other side of
+    // a seam, whose ends are the same points under other indices, makes bit for bit the same
+    // points, and the layout pairs seam edges by their points.
+    const Vec3 &pa = strip.vertices3d[a], &pb = strip.vertices3d[b];
+    const bool a_first =
+        std::make_tuple(pa.x(), pa.y(), pa.z(), a) < std::make_tuple(pb.x(), pb.y(), pb.z(), b);
+    const int lo = a_first ? a : b, hi = a_first ? b : a;
     auto [it, inserted] = edge_points.try_emplace({lo, hi});
     if (inserted)
       for (int j = 1; j < n; ++j)

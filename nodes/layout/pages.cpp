@@ -526,11 +526,11 @@ enum class SplitLong { None, Fitting, All, Bends };
 
 // The layout, long and thin strips split as `split_long` says (of them only those `chosen`
 // marks by strip index, where given); *long_strips counts them. `divided`: the strips' triangles
-// were divided, and how they are cut (StripData::divided).
+// were divided (StripData::divided).
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
                           SplitLong split_long, LongStrips* long_strips,
                           const std::vector<char>* chosen = nullptr, LabelCache* labels = nullptr,
-                          int divided = 0);
+                          bool divided = false);
 
 }  // namespace
 
@@ -538,7 +538,7 @@ namespace {
 
 // The tries of layout_pages on strips as they are (see there).
 PatternLayout layout_tries(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
-                           int divided) {
+                           bool divided) {
   LongStrips whole;
   // The pieces the tries share (most of them) get their labels arranged once.
   LabelCache labels;
@@ -609,7 +609,7 @@ PatternLayout layout_tries(const std::vector<FlatStrip>& strips, const LayoutOpt
 }
 
 // Triangles divided at most into this many, all strips together.
-constexpr std::size_t kMostDividedTriangles = 6000;
+constexpr std::size_t kMostDividedTriangles = 3000;
 
 // How many parts each edge of every triangle is divided into before the layout: where some
 // strip fits no page and has triangles with an edge longer than a third of the page's shorter
@@ -643,16 +643,12 @@ int divisions(const std::vector<FlatStrip>& strips, const LayoutOptions& options
 }  // namespace
 
 PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
-  PatternLayout layout = layout_tries(strips, options, 0);
+  PatternLayout layout = layout_tries(strips, options, false);
   const int n = divisions(strips, options);
   if (n <= 1) return layout;
   // A strip no page holds, of triangles too large to cut it well at their edges: laid out
   // again with every triangle divided (the same surface), kept where that saves pages.
-  // Cut across the long axis only, or into slabs first (where wider than the page is long):
-  // the better of the two (fewer pieces overflowing, then fewer pages).
-  const std::vector<FlatStrip> parts = divide_triangles(strips, n);
-  PatternLayout divided = layout_tries(parts, options, 1);
-  PatternLayout slabs = layout_tries(parts, options, 2);
+  PatternLayout divided = layout_tries(divide_triangles(strips, n), options, true);
   // Kept where fewer pieces overflow their page, or as many and every page it saves costs at
   // most splits_per_page more pieces (as for the long thin strips).
   auto overflowing = [](const PatternLayout& l) {
@@ -667,7 +663,6 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
         overflowing(l),
         l.pages.size() * static_cast<std::size_t>(options.splits_per_page) + pieces);
   };
-  if (cost(slabs) < cost(divided)) divided = std::move(slabs);
   const auto over = overflowing(layout), over_divided = overflowing(divided);
   if (!(cost(divided) < cost(layout)) ||
       (over_divided == over && divided.pages.size() >= layout.pages.size()))
@@ -694,7 +689,7 @@ namespace {
 
 PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOptions& options,
                           SplitLong split_long, LongStrips* long_strips,
-                          const std::vector<char>* chosen, LabelCache* labels, int divided) {
+                          const std::vector<char>* chosen, LabelCache* labels, bool divided) {
   *long_strips = LongStrips();
   Prepared p = prepare(strips, options);
   for (StripData& data : p.strips) data.divided = divided;

@@ -25,9 +25,9 @@ struct StripData {
   bool missing_boundary_warned = false;
   int splits = 0;  // split seams made so far (labelled <strip id>-1, -2, ...)
   /// Its triangles were divided (divide_triangles): a strip too large for the page is cut
-  /// across its long axis, not along a ruling (1); with `slabs`, one wider than the page is
-  /// long is first cut along its long axis into slabs that are not (2). 0: not divided.
-  int divided = 0;
+  /// across its long axis, not along a ruling (one wider than the page is long first along
+  /// that axis into slabs that are not).
+  bool divided = false;
 };
 
 /// An edge of a piece's boundary loop, with the seam label it carries and its flap.

@@ -168,7 +168,7 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
       const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
       // Wider than the page is long: first cut along the long axis into slabs that are not.
       const double longest = std::max(width, height);
-      const bool slabs = data.divided == 2 && box.size.y() > longest;
+      const bool slabs = box.size.y() > longest;
       const Vec2 axis = slabs ? Vec2(-std::sin(box.angle), std::cos(box.angle))
                               : Vec2(std::cos(box.angle), std::sin(box.angle));
       // By the farthest corner along the axis (then the centroid): the two triangles of a
@@ -207,6 +207,35 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
           std::sort(head.begin(), head.end());
           for (std::vector<int>& part : components(data, head)) work.push_back(std::move(part));
           continue;
+        }
+      }
+      if (!slabs) {
+        // Straight to the cut: k equal bands, each as long as the page allows for the set's
+        // width (its long side where the width fits the short one), the first cut at the clean
+        // position nearest 1/k of the length within that; kept where the band fits (a set
+        // bent across the axis goes on to the search below).
+        const double shortest = std::min(width, height);
+        const double allowed = box.size.y() <= shortest ? longest : shortest;
+        const double length = box.size.x();
+        const double target = length / std::ceil(length / allowed);
+        std::size_t best = 0;
+        for (std::size_t cut = 1; cut < order.size(); ++cut) {
+          if (!clean[cut]) continue;
+          const double reach = std::get<0>(along[cut - 1]) - start;
+          if (reach > allowed) break;
+          if (best == 0 ||
+              std::abs(reach - target) < std::abs(std::get<0>(along[best - 1]) - start - target))
+            best = cut;
+        }
+        if (best > 0) {
+          std::vector<int> head(order.begin(), order.begin() + best);
+          std::sort(head.begin(), head.end());
+          auto parts = components(data, head);
+          if (parts.size() == 1 && fits(head)) {
+            cut_off(data, set, head, used_labels, work);
+            done.push_back(std::move(head));
+            continue;
+          }
         }
       }
     } else {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/edge_map.h"
 #include "core/errors.h"
@@ -1344,11 +1346,25 @@ TEST(LayoutPages, TriangleLargerThanThePageIsCutAcrossItsDividedTriangles) {
   EXPECT_EQ(static_cast<int>(layout.pages.size()), 6);
 }
 
-// Both sides of every seam of divided strips get the same points, and the surface and its flat
-// image are kept: each new triangle is an isometric copy (flat edges as long as 3D ones).
+// Both sides of every seam of divided strips get the same points (bit for bit), and the surface and
+// its flat image are kept: each new triangle is an isometric copy (flat edges as long as 3D ones).
 TEST(LayoutDivide, BothSidesOfEverySeamGetTheSamePoints) {
-  const auto strips = prism_strips(square_footprint(40), 60, 0);
-  for (int n : {1, 2, 3}) {
+  // Scaled to coordinates no binary fraction is, and every other strip's vertices numbered
+  // backwards: the two sides of a seam see its ends in opposite index order.
+  auto strips = prism_strips(square_footprint(40), 60, 0);
+  for (std::size_t k = 0; k < strips.size(); ++k) {
+    FlatStrip& s = strips[k];
+    for (Vec3& v : s.vertices3d) v *= 0.37;
+    for (Vec2& v : s.vertices2d) v *= 0.37;
+    if (k % 2 == 1) continue;
+    const int last = static_cast<int>(s.vertices3d.size()) - 1;
+    std::reverse(s.vertices3d.begin(), s.vertices3d.end());
+    std::reverse(s.vertices2d.begin(), s.vertices2d.end());
+    for (Triangle& t : s.triangles)
+      for (int& v : t) v = last - v;
+    for (BoundaryEdge& e : s.boundary) e.v0 = last - e.v0, e.v1 = last - e.v1;
+  }
+  for (int n : {1, 2, 3, 5, 7}) {
     const auto divided = layout_internal::divide_triangles(strips, n);
     ASSERT_EQ(divided.size(), strips.size());
     std::map<int, const FlatStrip*> by_id;
@@ -1376,10 +1392,28 @@ TEST(LayoutDivide, BothSidesOfEverySeamGetTheSamePoints) {
         const FlatStrip& other = *by_id.at(e.neighbour_strip);
         const BoundaryEdge& partner = other.boundary.at(e.partner_edge);
         EXPECT_EQ(partner.label, e.label);
-        EXPECT_NEAR((other.vertices3d[partner.v0] - after.vertices3d[e.v1]).norm(), 0, 1e-12);
-        EXPECT_NEAR((other.vertices3d[partner.v1] - after.vertices3d[e.v0]).norm(), 0, 1e-12);
+        EXPECT_EQ(other.vertices3d[partner.v0], after.vertices3d[e.v1]);
+        EXPECT_EQ(other.vertices3d[partner.v1], after.vertices3d[e.v0]);
       }
     }
+    // Bit for bit: the layout pairs seam edges by their label and points. Each seam edge has
+    // one edge with its label running the other way between the same points.
+    using Key = std::tuple<std::string, std::array<double, 3>, std::array<double, 3>>;
+    std::map<Key, int> edges;
+    auto point = [](const Vec3& v) { return std::array<double, 3>{v.x(), v.y(), v.z()}; };
+    for (const FlatStrip& s : divided)
+      for (const BoundaryEdge& e : s.boundary)
+        if (e.kind == EdgeKind::Seam)
+          ++edges[{e.label, point(s.vertices3d[e.v0]), point(s.vertices3d[e.v1])}];
+    int checked = 0;
+    for (const auto& [key, count] : edges) {
+      const auto& [label, a, b] = key;
+      EXPECT_EQ(count, 1);
+      const auto reverse = edges.find({label, b, a});
+      EXPECT_TRUE(reverse != edges.end()) << "n " << n << " seam " << label;
+      ++checked;
+    }
+    EXPECT_EQ(checked, 2 * (4 + 4 + 1) * n);  // T, B and A, each side divided in n
   }
 }
 
