@@ -656,16 +656,17 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
       return note.find(" overflows its page") != std::string::npos;
     });
   };
-  auto cost = [&](const PatternLayout& l) {
-    std::size_t pieces = 0;
-    for (const Page& page : l.pages) pieces += page.pieces.size();
-    return std::make_pair(
-        overflowing(l),
-        l.pages.size() * static_cast<std::size_t>(options.splits_per_page) + pieces);
+  auto pieces_of = [](const PatternLayout& l) {
+    long count = 0;
+    for (const Page& page : l.pages) count += static_cast<long>(page.pieces.size());
+    return count;
   };
   const auto over = overflowing(layout), over_divided = overflowing(divided);
-  if (!(cost(divided) < cost(layout)) ||
-      (over_divided == over && divided.pages.size() >= layout.pages.size()))
+  const long saved =
+      static_cast<long>(layout.pages.size()) - static_cast<long>(divided.pages.size());
+  const long added = pieces_of(divided) - pieces_of(layout);
+  if (!(over_divided < over ||
+        (over_divided == over && saved > 0 && added <= options.splits_per_page * saved)))
     return layout;
   std::unordered_map<int, std::size_t> vertices;  // strip id -> its vertex count
   for (const FlatStrip& strip : strips) vertices[strip.id] = strip.vertices3d.size();

@@ -208,8 +208,7 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
           for (std::vector<int>& part : components(data, head)) work.push_back(std::move(part));
           continue;
         }
-      }
-      if (!slabs) {
+      } else {
         // Straight to the cut: k equal bands, each as long as the page allows for the set's
         // width (its long side where the width fits the short one), the first cut at the clean
         // position nearest 1/k of the length within that; kept where the band fits (a set
