@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -11,6 +12,7 @@
 #include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/overlap_2d.h"
+#include "core/piece_width.h"
 #include "core/seams.h"
 
 namespace papercraft {
@@ -495,6 +497,94 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     if (!joined) given_up.insert(strips[small].id);
   }
   if (left) left->assign(given_up.begin(), given_up.end());
+  label_seams(strips);
+  return strips;
+}
+
+namespace {
+
+// How much of the seam a hinge leaves between the two strips `merged` joined is a slit: the
+// number of points it took from the second strip (at `first_added` and after) that lie closer
+// than `width` in the plane to a point of the first with the same 3D point. A band folded
+// out beside the edge it shares runs along it with a thin wedge between them, too narrow for
+// a tab over its length; one that leaves the edge at an angle opens at once.
+int slit_points(const FlatStrip& merged, std::size_t first_added, double width) {
+  std::map<std::array<double, 3>, std::vector<int>> first;
+  for (std::size_t v = 0; v < first_added; ++v) {
+    const Vec3& p = merged.vertices3d[v];
+    first[{p.x(), p.y(), p.z()}].push_back(static_cast<int>(v));
+  }
+  int count = 0;
+  for (std::size_t v = first_added; v < merged.vertices2d.size(); ++v) {
+    const Vec3& p = merged.vertices3d[v];
+    auto it = first.find({p.x(), p.y(), p.z()});
+    if (it == first.end()) continue;
+    for (int u : it->second)
+      if ((merged.vertices2d[u] - merged.vertices2d[v]).norm() < width) {
+        ++count;
+        break;
+      }
+  }
+  return count;
+}
+
+}  // namespace
+
+std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
+                                          double narrow_share, const MergeOptions& options,
+                                          int most_hinges) {
+  validate(strips, options);
+  if (!(min_width > 0.0) || !(narrow_share >= 0.0) || most_hinges < 1) return strips;
+  for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
+  auto share_of = [&](const FlatStrip& strip) {
+    return narrow_area_fraction(strip.vertices2d, strip.triangles, min_width);
+  };
+  std::vector<double> share(strips.size());
+  for (std::size_t s = 0; s < strips.size(); ++s) share[s] = share_of(strips[s]);
+  std::set<int> given_up;  // ids of narrow strips no neighbour takes
+  while (true) {
+    // The narrowest strip still to place.
+    int narrow = -1;
+    for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+      if (share[s] > narrow_share && !given_up.count(strips[s].id) &&
+          (narrow < 0 || share[s] > share[narrow]))
+        narrow = s;
+    if (narrow < 0) break;
+    const std::vector<PairCandidate> pairs = shared_boundaries(strips);
+    const auto hinges = hinges_of(pairs, strips, [&](const PairCandidate& pair) {
+      return pair.x == narrow || pair.y == narrow;
+    });
+    // Of the hinges that give a union less narrow than the strip and no narrower than the
+    // neighbour was (or than the bound), the one that leaves the least slit.
+    FlatStrip best;
+    int best_hinge = -1, best_slit = 0;
+    double best_share = 0.0;
+    int tried = 0;
+    for (int h = 0; h < static_cast<int>(hinges.size()) && tried < most_hinges; ++h) {
+      const PairCandidate& pair = pairs[hinges[h].pair];
+      const int other = pair.x == narrow ? pair.y : pair.x;
+      FlatStrip merged;
+      ++tried;
+      if (!try_merge(strips[pair.x], strips[pair.y], {hinges[h].edge}, options, merged)) continue;
+      const int slit = slit_points(merged, strips[pair.x].vertices2d.size(), min_width);
+      if (best_hinge >= 0 && slit >= best_slit) continue;
+      const double joined_share = share_of(merged);
+      if (!(joined_share < share[narrow]) || joined_share > std::max(share[other], narrow_share))
+        continue;
+      best = std::move(merged);
+      best_hinge = h, best_slit = slit, best_share = joined_share;
+      if (slit == 0) break;
+    }
+    const bool joined = best_hinge >= 0;
+    if (joined) {
+      const PairCandidate& pair = pairs[hinges[best_hinge].pair];
+      strips[pair.x] = std::move(best);
+      share[pair.x] = best_share;
+      strips.erase(strips.begin() + pair.y);
+      share.erase(share.begin() + pair.y);
+    }
+    if (!joined) given_up.insert(strips[narrow].id);
+  }
   label_seams(strips);
   return strips;
 }

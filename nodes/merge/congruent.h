@@ -20,6 +20,9 @@ struct MergeOptions {
   /// The union must not overlap itself: two triangles may penetrate by at most this
   /// times the mean edge length (plus the rigid fit's residual).
   double overlap_tolerance = 1e-9;
+  /// The merge node hinges a piece narrower than min_width_mm over more than this share of
+  /// its area onto a neighbour (join_narrow_strips); 1: never.
+  double narrow_join_share = 0.25;
 };
 
 /// Joins flat strips of one model whose shared boundaries have congruent flat images.
@@ -64,5 +67,18 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options = {},
                                          std::vector<int>* left = nullptr);
+
+/// Joins each flat strip narrower than `min_width` (model units) over more than `narrow_share`
+/// of its area (narrow_area_fraction: a band along a thin feature, a fan of long thin
+/// triangles) to a neighbour by a hinge, as join_small_strips joins a crumb: the narrowest
+/// first, its shared edges the longest first (at most `most_hinges` tried), kept where the
+/// union overlaps nowhere, is less narrow than the strip and no more narrow than the
+/// neighbour was (or than `narrow_share`). The band then folds over the hinge and its other
+/// shared edges are seams of the union with itself. Strips no neighbour takes are left as
+/// they are; then label_seams runs on the result.
+/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
+                                          double narrow_share, const MergeOptions& options = {},
+                                          int most_hinges = 48);
 
 }  // namespace papercraft

@@ -55,11 +55,13 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
         const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
         area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
       }
-      const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
-                               std::to_string(std::lround(area * scale * scale)) +
-                               " mm^2, below min_area_mm2, and no neighbour takes it";
-      model.note(text);
-      spdlog::warn("{}: {}", model.name, text);
+      if (area < limits.min_area) {  // else a narrow strip was joined to it since
+        const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
+                                 std::to_string(std::lround(area * scale * scale)) +
+                                 " mm^2, below min_area_mm2, and no neighbour takes it";
+        model.note(text);
+        spdlog::warn("{}: {}", model.name, text);
+      }
     }
     if (limits.min_width > 0.0) {
       const double narrow =
@@ -79,11 +81,18 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
 
 void register_merge_congruent(Registry& registry) {
   using O = MergeOptions;
-  static const auto table = ParamTable<O>().add(
-      "congruence_tolerance", [](O & o) -> auto& { return o.congruence_tolerance; },
-      "rigid-fit residual (relative to the strip size) below which two images of a boundary "
-      "are congruent",
-      at_least(0));
+  static const auto table =
+      ParamTable<O>()
+          .add(
+              "congruence_tolerance", [](O & o) -> auto& { return o.congruence_tolerance; },
+              "rigid-fit residual (relative to the strip size) below which two images of a "
+              "boundary are congruent",
+              at_least(0))
+          .add(
+              "narrow_join_share", [](O & o) -> auto& { return o.narrow_join_share; },
+              "a piece narrower than min_width_mm over more than this share of its area is "
+              "hinged onto a wider neighbour (1: never)",
+              between(0, 1));
   registry.add({.name = "merge.congruent",
                 .summary = "join flat strips along congruent shared boundaries",
                 .input = MessageType::of<UnfoldedStrip>(),
@@ -99,6 +108,9 @@ void register_merge_congruent(Registry& registry) {
                     std::vector<int> small;
                     strips.flat = join_small_strips(
                         std::move(strips.flat), in.model->piece_limits().min_area, options, &small);
+                    const PieceLimits limits = in.model->piece_limits();
+                    strips.flat = join_narrow_strips(std::move(strips.flat), limits.min_width,
+                                                     options.narrow_join_share, options);
                     note_unbuildable_pieces(*in.model, strips.flat, small);
                     record(*in.model, strips);
                     out.emit("out", std::move(strips));

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/piece_width.h"
 #include "nodes/unfold/sequential.h"
 #include "support/unfold_checks.h"
 
@@ -266,6 +267,109 @@ TEST(JoinSmallStrips, CrumbWithNoFreeSideStaysAndIsNamed) {
   const auto joined = join_small_strips({x, crumb}, 1.0, {}, &left);
   EXPECT_EQ(joined.size(), 2u);
   EXPECT_EQ(left, std::vector<int>{1});
+}
+
+// A floor and a narrow wall standing on some of its sides: merge_congruent leaves them apart
+// (the shared edges bend on the floor and run straight on the wall), then join_narrow_strips
+// folds the wall out of the floor, into one piece wide over all but a quarter of its area.
+std::vector<FlatStrip> join_wall_to_floor(const FlatStrip& floor, const FlatStrip& wall,
+                                          double width) {
+  const std::vector<FlatStrip> strips = merge_congruent({floor, wall});
+  EXPECT_EQ(strips.size(), 2u);
+  EXPECT_GT(narrow_area_fraction(strips.back().vertices2d, strips.back().triangles, width), 0.9);
+  std::vector<FlatStrip> joined = join_narrow_strips(strips, width, 0.25);
+  EXPECT_EQ(joined.size(), 1u);
+  expect_valid(joined);
+  for (const FlatStrip& s : joined)
+    EXPECT_LT(narrow_area_fraction(s.vertices2d, s.triangles, width), 0.25);
+  return joined;
+}
+
+// A wall 0.2 high around two sides of a 4 x 4 floor (one corner): the wall unfolds straight,
+// the floor's two sides turn at the corner, so merge_congruent cannot join them. The wall is
+// narrower than 0.5 everywhere; folded out over one side of the floor, its other half leaves
+// the floor's other side at a right angle (a seam with room for a tab), and the union is a
+// piece wide over all but a tenth of its area.
+TEST(JoinNarrowStrips, WallIsFoldedOutOfTheFloorItStandsOn) {
+  const double h = 0.2;
+  const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), d(0, 4, 0), up(0, 0, h);
+  FlatStrip floor;
+  floor.id = 0;
+  floor.vertices3d = {a, b, c, d};
+  floor.vertices2d = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  FlatStrip wall;
+  wall.id = 1;
+  wall.source_strip = 1;
+  wall.vertices3d = {c, b, a, c + up, b + up, a + up};
+  wall.vertices2d = {{0, 0}, {4, 0}, {8, 0}, {0, h}, {4, h}, {8, h}};
+  wall.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+  const double width = 0.5;
+  const auto joined = join_wall_to_floor(floor, wall, width);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_EQ(joined[0].id, 0);
+  EXPECT_EQ(joined[0].triangles.size(), 6u);
+  // One side of the floor is the hinge; the other is a seam of the piece with itself.
+  int seam_edges = 0;
+  for (const BoundaryEdge& e : joined[0].boundary) seam_edges += e.kind == EdgeKind::Seam;
+  EXPECT_EQ(seam_edges, 2);
+
+  // Without a width bound, or with a share no strip exceeds, nothing is joined.
+  EXPECT_EQ(join_narrow_strips({floor, wall}, 0.0, 0.25).size(), 2u);
+  EXPECT_EQ(join_narrow_strips({floor, wall}, width, 1.0).size(), 2u);
+}
+
+// A wall 0.2 high along three sides of a floor that bend by 10 and 90 degrees. Folded out over
+// either of the first two sides, the wall passes the 10-degree bend 0.7 from the floor's edge
+// (a slit, narrower than the width bound of 1, where no tab fits); over the third, the
+// shortest, it leaves the floor at the right angle. That hinge is chosen.
+TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
+  const double h = 0.2, turn = 10.0 * std::acos(-1.0) / 180.0;
+  const Vec2 a(0, 0), b(4, 0), c = b + 4.0 * Vec2(std::cos(turn), std::sin(turn));
+  const Vec2 d = c + 3.0 * Vec2(-std::sin(turn), std::cos(turn));
+  auto lift = [](const Vec2& p, double z) { return Vec3(p.x(), p.y(), z); };
+  FlatStrip floor;
+  floor.id = 0;
+  floor.vertices2d = {a, b, c, d};
+  for (const Vec2& p : floor.vertices2d) floor.vertices3d.push_back(lift(p, 0));
+  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  FlatStrip wall;  // bottom d, c, b, a (0-3), top the same 0.2 higher (4-7), unrolled straight
+  wall.id = 1;
+  wall.source_strip = 1;
+  const std::vector<Vec2> bottom{d, c, b, a};
+  double along = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    if (k > 0) along += (bottom[k] - bottom[k - 1]).norm();
+    wall.vertices2d.push_back({along, 0.0});
+    wall.vertices3d.push_back(lift(bottom[k], 0));
+  }
+  for (int k = 0; k < 4; ++k) {
+    wall.vertices2d.push_back(wall.vertices2d[k] + Vec2(0, h));
+    wall.vertices3d.push_back(lift(bottom[k], h));
+  }
+  for (int k = 0; k < 3; ++k) {
+    wall.triangles.push_back({k, k + 1, k + 5});
+    wall.triangles.push_back({k, k + 5, k + 4});
+  }
+  const auto joined = join_wall_to_floor(floor, wall, 1.0);
+  ASSERT_EQ(joined.size(), 1u);
+  // Welded at c and d (the floor's points 2 and 3): 4 + 8 - 2 points, and the wall's first
+  // two triangles use the floor's d and c.
+  EXPECT_EQ(joined[0].vertices2d.size(), 10u);
+  ASSERT_EQ(joined[0].triangles.size(), 8u);
+  EXPECT_EQ(joined[0].triangles[2][0], 3);
+  EXPECT_EQ(joined[0].triangles[2][1], 2);
+}
+
+// Two bands side by side: joining them would leave a piece as narrow as each, so both stay.
+TEST(JoinNarrowStrips, TwoBandsAreNotJoinedIntoOneAsNarrow) {
+  const int n = 16;
+  std::vector<FlatStrip> strips;
+  append(strips, ring_strip(1.0, 0.0, 1.0, 0.1, n));
+  append(strips, ring_strip(1.0, 0.1, 0.9, 0.2, n));
+  strips = merge_congruent(strips);
+  ASSERT_EQ(strips.size(), 2u);
+  EXPECT_EQ(join_narrow_strips(strips, 0.5, 0.25).size(), 2u);
 }
 
 TEST(MergeCongruent, BadInputThrows) {
