@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -559,12 +558,11 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     FlatStrip best;
     int best_hinge = -1, best_slit = 0;
     double best_share = 0.0;
-    int tried = 0;
-    for (int h = 0; h < static_cast<int>(hinges.size()) && tried < most_hinges; ++h) {
+    const int tries = std::min(static_cast<int>(hinges.size()), most_hinges);
+    for (int h = 0; h < tries; ++h) {
       const PairCandidate& pair = pairs[hinges[h].pair];
       const int other = pair.x == narrow ? pair.y : pair.x;
       FlatStrip merged;
-      ++tried;
       if (!try_merge(strips[pair.x], strips[pair.y], {hinges[h].edge}, options, merged)) continue;
       const int slit = slit_points(merged, strips[pair.x].vertices2d.size(), min_width);
       if (best_hinge >= 0 && slit >= best_slit) continue;
@@ -575,15 +573,15 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       best_hinge = h, best_slit = slit, best_share = joined_share;
       if (slit == 0) break;
     }
-    const bool joined = best_hinge >= 0;
-    if (joined) {
-      const PairCandidate& pair = pairs[hinges[best_hinge].pair];
-      strips[pair.x] = std::move(best);
-      share[pair.x] = best_share;
-      strips.erase(strips.begin() + pair.y);
-      share.erase(share.begin() + pair.y);
+    if (best_hinge < 0) {
+      given_up.insert(strips[narrow].id);
+      continue;
     }
-    if (!joined) given_up.insert(strips[narrow].id);
+    const PairCandidate& pair = pairs[hinges[best_hinge].pair];
+    strips[pair.x] = std::move(best);
+    share[pair.x] = best_share;
+    strips.erase(strips.begin() + pair.y);
+    share.erase(share.begin() + pair.y);
   }
   label_seams(strips);
   return strips;
