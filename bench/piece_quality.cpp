@@ -1,7 +1,10 @@
 // Whether a person can cut and glue what a run printed: reads <model>/strips.json and
 // <model>/report.json of finished runs and prints, per model, the pieces narrower than a
 // fold-able width over much of their area, the pieces smaller than a fingertip, and every way a
-// seam can fail to meet (tests/support/pattern_checks.h), then the totals.
+// seam can fail to meet (tests/support/pattern_checks.h), then the totals. "narrow alone" and
+// "small alone" count those that are a separate part of the input by themselves (a narrow
+// strip glued to no other, a small one whose whole part is under the area bound): no join
+// can widen or grow them.
 //
 //   piece_quality OUT/eight OUT/cactus ...            # model folders
 //   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 OUT/*/
@@ -67,11 +70,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf(
-      "| model | pieces | narrow | small | small alone | seam edges | no partner | "
+      "| model | pieces | narrow | narrow alone | small | small alone | seam edges | no partner | "
       "length differs | other label | labels | not two chains | sides differ | "
       "notes unmatched |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  long total[12] = {};
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  long total[13] = {};
   for (const auto& dir : models) {
     nlohmann::json strips, report;
     try {
@@ -87,8 +90,9 @@ int main(int argc, char** argv) {
     const auto seams = papercraft::testing::check_seams(strips);
     const int unmatched_notes =
         count_notes(report, "ends do not match") + count_notes(report, "has no partner edge");
-    const long row[12] = {pieces.pieces,
+    const long row[13] = {pieces.pieces,
                           pieces.narrow,
+                          pieces.narrow_alone,
                           pieces.small,
                           pieces.small_alone,
                           seams.seam_edges,
@@ -99,17 +103,19 @@ int main(int argc, char** argv) {
                           seams.labels_not_two_chains,
                           seams.labels_with_sides_differing,
                           unmatched_notes};
-    for (int k = 0; k < 12; ++k) total[k] += row[k];
+    for (int k = 0; k < 13; ++k) total[k] += row[k];
     std::printf(
-        "| %s | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+        "| %s | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
         dir.filename().empty() ? dir.parent_path().filename().c_str() : dir.filename().c_str(),
-        row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9],
-        row[10], row[11]);
+        row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9], row[10],
+        row[11], row[12]);
     for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }
-  std::printf("| **total** | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
-              total[0], total[1], total[2], total[3], total[4], total[5], total[6], total[7], total[8],
-              total[9], total[10], total[11]);
+  std::printf(
+      "| **total** | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld "
+      "|\n",
+      total[0], total[1], total[2], total[3], total[4], total[5], total[6], total[7], total[8],
+      total[9], total[10], total[11], total[12]);
   return 0;
 }

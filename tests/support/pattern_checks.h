@@ -194,6 +194,9 @@ struct PieceFindings {
   /// seams, transitively) is under `small_mm2` too: a separate part of the input that small,
   /// with no neighbour to join.
   int small_alone = 0;
+  /// Of the narrow ones, those that are a whole piece of the model on their own (no seam to
+  /// another strip): a separate part of the input that thin, with no neighbour to join.
+  int narrow_alone = 0;
   double smallest_mm2 = 0.0;
   double most_narrow_share = 0.0;
   std::vector<std::string> problems;
@@ -215,6 +218,7 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
       if (it != index_of.end()) joined.unite(i, it->second);
     }
   std::vector<double> areas(strips.size(), 0.0);
+  std::vector<bool> narrow(strips.size(), false);
   for (std::size_t s = 0; s < strips.size(); ++s) {
     const auto& strip = strips[s];
     std::vector<Vec2> points;
@@ -236,6 +240,7 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
     const std::string id = strip.at("id").dump();
     if (share > narrow_share) {
       ++findings.narrow;
+      narrow[s] = true;
       if (findings.problems.size() < 8)
         findings.problems.push_back("strip " + id + ": " + std::to_string(int(share * 100)) +
                                     "% narrower than " + std::to_string(narrow_mm) + " mm");
@@ -248,8 +253,12 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
   }
   std::map<std::size_t, double> component_area;
   for (std::size_t s = 0; s < strips.size(); ++s) component_area[joined.find(s)] += areas[s];
-  for (std::size_t s = 0; s < strips.size(); ++s)
+  std::map<std::size_t, int> component_strips;
+  for (std::size_t s = 0; s < strips.size(); ++s) ++component_strips[joined.find(s)];
+  for (std::size_t s = 0; s < strips.size(); ++s) {
     findings.small_alone += areas[s] < small_mm2 && component_area[joined.find(s)] < small_mm2;
+    findings.narrow_alone += narrow[s] && component_strips[joined.find(s)] == 1;
+  }
   if (findings.pieces == 0) findings.smallest_mm2 = 0.0;
   return findings;
 }
