@@ -16,6 +16,10 @@
 namespace papercraft::layout_internal {
 namespace {
 
+// Texts clear each other by at least this (mm). Boxes that only touch in the piece's plane
+// can overlap by a rounding error once turned onto the page (and counted so).
+constexpr double kTextGap = 1e-6;
+
 // The inscribed circle of triangle t of the piece's strip: its centre and radius; none for a
 // triangle whose corners coincide.
 std::optional<std::pair<Vec2, double>> incircle(const StripData& data, int t) {
@@ -412,7 +416,7 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
   const LeaderRouter router(lines, 1.0);
   auto clear = [&](const std::array<Vec2, 4>& candidate) {
     for (const auto& other : taken)
-      if (convex_overlap(candidate.data(), 4, other.data(), 4, 0.0)) return false;
+      if (convex_overlap(candidate.data(), 4, other.data(), 4, -kTextGap)) return false;
     return router.box_clear(candidate);
   };
   auto fits = [&](const std::array<Vec2, 4>& candidate) {
@@ -640,7 +644,7 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
           for (const Vec2& corner : candidate) inside = inside && point_in_polygon(corner, polygon);
           bool free = true;
           for (const auto& other : taken)
-            free = free && !convex_overlap(candidate.data(), 4, other.data(), 4, 0.0);
+            free = free && !convex_overlap(candidate.data(), 4, other.data(), 4, -kTextGap);
           if (!inside || !free) continue;
           label.position = centre;
           label.direction = direction;
@@ -947,7 +951,7 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
       auto crowding = [&](const std::array<Vec2, 4>& candidate) {
         int count = 0;
         for (const auto& other : taken)
-          count += convex_overlap(candidate.data(), 4, other.data(), 4, 0.0);
+          count += convex_overlap(candidate.data(), 4, other.data(), 4, -kTextGap);
         return count;
       };
       label.size = std::max(label.size, smallest);
