@@ -553,8 +553,10 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     const auto hinges = hinges_of(pairs, strips, [&](const PairCandidate& pair) {
       return pair.x == narrow || pair.y == narrow;
     });
-    // Of the hinges that give a union less narrow than the strip and no narrower than the
-    // neighbour was (or than the bound), the one that leaves the least slit.
+    // Of the hinges that give a union less narrow than the strip, and either no narrower than
+    // the neighbour was (or than the bound) or narrow over no more area than the two together
+    // (a band kept whole beside a wide neighbour: one seam fewer, no tab on the band), the one
+    // that leaves the least slit.
     FlatStrip best;
     int best_hinge = -1, best_slit = 0;
     double best_share = 0.0;
@@ -567,7 +569,10 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       const int slit = slit_points(merged, strips[pair.x].vertices2d.size(), min_width);
       if (best_hinge >= 0 && slit >= best_slit) continue;
       const double joined_share = share_of(merged);
-      if (!(joined_share < share[narrow]) || joined_share > std::max(share[other], narrow_share))
+      if (!(joined_share < share[narrow])) continue;
+      if (joined_share > std::max(share[other], narrow_share) &&
+          joined_share * flat_area(merged) >
+              share[narrow] * flat_area(strips[narrow]) + share[other] * flat_area(strips[other]))
         continue;
       best = std::move(merged);
       best_hinge = h, best_slit = slit, best_share = joined_share;
@@ -582,6 +587,20 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     share[pair.x] = best_share;
     strips.erase(strips.begin() + pair.y);
     share.erase(share.begin() + pair.y);
+    // A strip given up beside the union is tried again: the union is less narrow than the
+    // neighbour it folded onto was, or has new edges for a hinge.
+    const FlatStrip& joined = strips[pair.x];  // x < y: the union kept x's place
+    std::set<std::array<double, 6>> rim;
+    for (const BoundaryEdge& e : joined.boundary)
+      rim.insert(exact_key(joined.vertices3d[e.v0], joined.vertices3d[e.v1]));
+    for (const FlatStrip& strip : strips) {
+      if (!given_up.count(strip.id)) continue;
+      for (const BoundaryEdge& e : strip.boundary)
+        if (rim.count(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1]))) {
+          given_up.erase(strip.id);
+          break;
+        }
+    }
   }
   label_seams(strips);
   return strips;

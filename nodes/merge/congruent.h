@@ -72,10 +72,14 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// of its area (narrow_area_fraction: a band along a thin feature, a fan of long thin
 /// triangles) to a neighbour by a hinge, as join_small_strips joins a crumb: the narrowest
 /// first, its shared edges the longest first (at most `most_hinges` tried), kept where the
-/// union overlaps nowhere, is less narrow than the strip and no more narrow than the
-/// neighbour was (or than `narrow_share`). The band then folds over the hinge and its other
-/// shared edges are seams of the union with itself. Strips no neighbour takes are left as
-/// they are; then label_seams runs on the result.
+/// union overlaps nowhere, is less narrow than the strip, and either no more narrow than the
+/// neighbour was (or than `narrow_share`) or narrow over no more area than the strip and the
+/// neighbour together (a band kept whole beside a wide neighbour, one seam fewer); of those,
+/// the hinge leaving the fewest shared points closer than `min_width` in the plane (a slit).
+/// The band then folds over the hinge and its other shared edges are seams of the union with
+/// itself. A strip no neighbour takes is passed over
+/// until a join makes a union beside it (new edges to fold over, a neighbour less narrow), then
+/// tried again; those left after that stay as they are. Then label_seams runs on the result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},

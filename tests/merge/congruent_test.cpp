@@ -269,6 +269,41 @@ TEST(JoinSmallStrips, CrumbWithNoFreeSideStaysAndIsNamed) {
   EXPECT_EQ(left, std::vector<int>{1});
 }
 
+// The floor a-b-c-d (4 x 4 at z = 0, corners counter-clockwise), as laid out in the plane.
+FlatStrip square_floor(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  FlatStrip floor;
+  floor.id = 0;
+  floor.vertices3d = {a, b, c, d};
+  floor.vertices2d = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  return floor;
+}
+
+// A wall `h` high standing on the polyline `bottom` (at z = 0; points 0..n-1), its top
+// points n..2n-1 `h` higher, unrolled straight along x. Walking `bottom` in order keeps the
+// wall on the left, so it must run against the floor's edges.
+FlatStrip straight_wall(const std::vector<Vec3>& bottom, double h) {
+  FlatStrip wall;
+  wall.id = 1;
+  wall.source_strip = 1;
+  const int n = static_cast<int>(bottom.size());
+  double along = 0.0;
+  for (int k = 0; k < n; ++k) {
+    if (k > 0) along += (bottom[k] - bottom[k - 1]).norm();
+    wall.vertices2d.push_back({along, 0.0});
+    wall.vertices3d.push_back(bottom[k]);
+  }
+  for (int k = 0; k < n; ++k) {
+    wall.vertices2d.push_back(wall.vertices2d[k] + Vec2(0, h));
+    wall.vertices3d.push_back(bottom[k] + Vec3(0, 0, h));
+  }
+  for (int k = 0; k + 1 < n; ++k) {
+    wall.triangles.push_back({k, k + 1, k + n + 1});
+    wall.triangles.push_back({k, k + n + 1, k + n});
+  }
+  return wall;
+}
+
 // A floor and a narrow wall standing on some of its sides: merge_congruent leaves them apart
 // (the shared edges bend on the floor and run straight on the wall), then join_narrow_strips
 // folds the wall out of the floor, into one piece wide over all but a quarter of its area.
@@ -293,11 +328,7 @@ std::vector<FlatStrip> join_wall_to_floor(const FlatStrip& floor, const FlatStri
 TEST(JoinNarrowStrips, WallIsFoldedOutOfTheFloorItStandsOn) {
   const double h = 0.2;
   const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), d(0, 4, 0), up(0, 0, h);
-  FlatStrip floor;
-  floor.id = 0;
-  floor.vertices3d = {a, b, c, d};
-  floor.vertices2d = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
-  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const FlatStrip floor = square_floor(a, b, c, d);
   FlatStrip wall;
   wall.id = 1;
   wall.source_strip = 1;
@@ -333,24 +364,7 @@ TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
   floor.vertices2d = {a, b, c, d};
   for (const Vec2& p : floor.vertices2d) floor.vertices3d.push_back(lift(p, 0));
   floor.triangles = {{0, 1, 2}, {0, 2, 3}};
-  FlatStrip wall;  // bottom d, c, b, a (0-3), top the same 0.2 higher (4-7), unrolled straight
-  wall.id = 1;
-  wall.source_strip = 1;
-  const std::vector<Vec2> bottom{d, c, b, a};
-  double along = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    if (k > 0) along += (bottom[k] - bottom[k - 1]).norm();
-    wall.vertices2d.push_back({along, 0.0});
-    wall.vertices3d.push_back(lift(bottom[k], 0));
-  }
-  for (int k = 0; k < 4; ++k) {
-    wall.vertices2d.push_back(wall.vertices2d[k] + Vec2(0, h));
-    wall.vertices3d.push_back(lift(bottom[k], h));
-  }
-  for (int k = 0; k < 3; ++k) {
-    wall.triangles.push_back({k, k + 1, k + 5});
-    wall.triangles.push_back({k, k + 5, k + 4});
-  }
+  const FlatStrip wall = straight_wall({lift(d, 0), lift(c, 0), lift(b, 0), lift(a, 0)}, h);
   const auto joined = join_wall_to_floor(floor, wall, 1.0);
   ASSERT_EQ(joined.size(), 1u);
   // Welded at c and d (the floor's points 2 and 3): 4 + 8 - 2 points, and the wall's first
@@ -359,6 +373,68 @@ TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
   ASSERT_EQ(joined[0].triangles.size(), 8u);
   EXPECT_EQ(joined[0].triangles[2][0], 3);
   EXPECT_EQ(joined[0].triangles[2][1], 2);
+}
+
+// Two walls 0.2 high stacked on one side of a 4 x 4 floor, the upper one first in the order.
+// Folded onto the lower wall alone the upper one stays as narrow as it was, so it is passed
+// over; once the lower wall is folded out of the floor, the upper one folds out of that union
+// (a hinge on the lower wall's top edge, which is now an edge of the floor's piece).
+TEST(JoinNarrowStrips, StripPassedOverIsTriedAgainBesideTheUnion) {
+  const double h = 0.2;
+  const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), d(0, 4, 0), up(0, 0, h);
+  const FlatStrip floor = square_floor(a, b, c, d);
+  auto wall = [&](int id, const Vec3& lift) {  // on the floor's side a-b, `lift` above it
+    FlatStrip strip;
+    strip.id = id;
+    strip.source_strip = id;
+    strip.vertices3d = {b + lift, a + lift, b + lift + up, a + lift + up};
+    strip.vertices2d = {{0, 0}, {4, 0}, {0, h}, {4, h}};
+    strip.triangles = {{0, 1, 3}, {0, 3, 2}};
+    return strip;
+  };
+  const std::vector<FlatStrip> strips{floor, wall(1, up), wall(2, Vec3::Zero())};
+  const double width = 0.5;
+  for (std::size_t i = 1; i < strips.size(); ++i)
+    EXPECT_EQ(narrow_area_fraction(strips[i].vertices2d, strips[i].triangles, width), 1.0);
+  const auto joined = join_narrow_strips(strips, width, 0.25);
+  ASSERT_EQ(joined.size(), 1u);
+  expect_valid(joined);
+  EXPECT_EQ(joined[0].triangles.size(), 6u);
+  EXPECT_LT(narrow_area_fraction(joined[0].vertices2d, joined[0].triangles, width), 0.25);
+}
+
+// A wall 0.2 high along three sides of a 1 x 0.6 floor, unrolled straight: folded out over one
+// side, the rest of it sticks out beyond the floor's corner, so the piece is narrower than 0.5
+// over more than a quarter of its area, more than the floor was. But it is narrow over no more
+// area than the wall and the floor were apart (the wall's overhang), with one seam fewer: kept.
+TEST(JoinNarrowStrips, BandIsKeptOnANeighbourWhereTheUnionIsNarrowOverNoMoreArea) {
+  const double h = 0.2, width = 0.5;
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(1, 0.6, 0), d(0, 0.6, 0);
+  FlatStrip floor;
+  floor.id = 0;
+  floor.vertices3d = {a, b, c, d};
+  for (const Vec3& p : floor.vertices3d) floor.vertices2d.emplace_back(p.x(), p.y());
+  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const FlatStrip wall = straight_wall({d, c, b, a}, h);
+  auto share = [&](const FlatStrip& s) {
+    return narrow_area_fraction(s.vertices2d, s.triangles, width);
+  };
+  auto area = [](const FlatStrip& s) {
+    double sum = 0.0;
+    for (const Triangle& t : s.triangles) {
+      const Vec2 u = s.vertices2d[t[1]] - s.vertices2d[t[0]];
+      const Vec2 v = s.vertices2d[t[2]] - s.vertices2d[t[0]];
+      sum += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+    }
+    return sum;
+  };
+  EXPECT_LT(share(floor), 0.25);
+  EXPECT_EQ(share(wall), 1.0);
+  const auto joined = join_narrow_strips({floor, wall}, width, 0.25);
+  ASSERT_EQ(joined.size(), 1u);
+  expect_valid(joined);
+  EXPECT_GT(share(joined[0]), 0.25);
+  EXPECT_LE(share(joined[0]) * area(joined[0]), share(floor) * area(floor) + area(wall));
 }
 
 // Two bands side by side: joining them would leave a piece as narrow as each, so both stay.
