@@ -83,6 +83,6 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},
-                                          int most_hinges = 48);
+                                          int most_hinges = 256);
 
 }  // namespace papercraft
