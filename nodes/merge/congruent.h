@@ -77,9 +77,9 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// neighbour together (a band kept whole beside a wide neighbour, one seam fewer); of those,
 /// the hinge leaving the fewest shared points closer than `min_width` in the plane (a slit).
 /// The band then folds over the hinge and its other shared edges are seams of the union with
-/// itself. A strip no neighbour takes is passed over
-/// until a join makes a union beside it (new edges to fold over, a neighbour less narrow), then
-/// tried again; those left after that stay as they are. Then label_seams runs on the result.
+/// itself. A strip no neighbour takes is passed over until a join makes a union beside it (new
+/// edges to fold over, a neighbour less narrow), then tried again; those left after that stay
+/// as they are. Then label_seams runs on the result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},

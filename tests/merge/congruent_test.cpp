@@ -19,6 +19,7 @@ using unfold_testing::euler_characteristic;
 using unfold_testing::expect_isometric;
 using unfold_testing::ladder_strip;
 using unfold_testing::ring_strip;
+using unfold_testing::signed_area;
 
 void append(std::vector<FlatStrip>& all, const RuledStrip& strip) {
   auto flat = unfold_strip(strip, static_cast<int>(all.size()), static_cast<int>(all.size()));
@@ -269,12 +270,12 @@ TEST(JoinSmallStrips, CrumbWithNoFreeSideStaysAndIsNamed) {
   EXPECT_EQ(left, std::vector<int>{1});
 }
 
-// The floor a-b-c-d (4 x 4 at z = 0, corners counter-clockwise), as laid out in the plane.
-FlatStrip square_floor(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+// The floor a-b-c-d (at z = 0, corners counter-clockwise), laid out in the plane as it lies.
+FlatStrip flat_floor(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   FlatStrip floor;
   floor.id = 0;
   floor.vertices3d = {a, b, c, d};
-  floor.vertices2d = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  for (const Vec3& p : floor.vertices3d) floor.vertices2d.emplace_back(p.x(), p.y());
   floor.triangles = {{0, 1, 2}, {0, 2, 3}};
   return floor;
 }
@@ -328,7 +329,7 @@ std::vector<FlatStrip> join_wall_to_floor(const FlatStrip& floor, const FlatStri
 TEST(JoinNarrowStrips, WallIsFoldedOutOfTheFloorItStandsOn) {
   const double h = 0.2;
   const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), d(0, 4, 0), up(0, 0, h);
-  const FlatStrip floor = square_floor(a, b, c, d);
+  const FlatStrip floor = flat_floor(a, b, c, d);
   FlatStrip wall;
   wall.id = 1;
   wall.source_strip = 1;
@@ -382,7 +383,7 @@ TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
 TEST(JoinNarrowStrips, StripPassedOverIsTriedAgainBesideTheUnion) {
   const double h = 0.2;
   const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), d(0, 4, 0), up(0, 0, h);
-  const FlatStrip floor = square_floor(a, b, c, d);
+  const FlatStrip floor = flat_floor(a, b, c, d);
   auto wall = [&](int id, const Vec3& lift) {  // on the floor's side a-b, `lift` above it
     FlatStrip strip;
     strip.id = id;
@@ -410,22 +411,14 @@ TEST(JoinNarrowStrips, StripPassedOverIsTriedAgainBesideTheUnion) {
 TEST(JoinNarrowStrips, BandIsKeptOnANeighbourWhereTheUnionIsNarrowOverNoMoreArea) {
   const double h = 0.2, width = 0.5;
   const Vec3 a(0, 0, 0), b(1, 0, 0), c(1, 0.6, 0), d(0, 0.6, 0);
-  FlatStrip floor;
-  floor.id = 0;
-  floor.vertices3d = {a, b, c, d};
-  for (const Vec3& p : floor.vertices3d) floor.vertices2d.emplace_back(p.x(), p.y());
-  floor.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const FlatStrip floor = flat_floor(a, b, c, d);
   const FlatStrip wall = straight_wall({d, c, b, a}, h);
   auto share = [&](const FlatStrip& s) {
     return narrow_area_fraction(s.vertices2d, s.triangles, width);
   };
-  auto area = [](const FlatStrip& s) {
+  auto area = [](const FlatStrip& s) {  // counter-clockwise triangles (expect_valid)
     double sum = 0.0;
-    for (const Triangle& t : s.triangles) {
-      const Vec2 u = s.vertices2d[t[1]] - s.vertices2d[t[0]];
-      const Vec2 v = s.vertices2d[t[2]] - s.vertices2d[t[0]];
-      sum += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
-    }
+    for (const Triangle& t : s.triangles) sum += signed_area(s, t);
     return sum;
   };
   EXPECT_LT(share(floor), 0.25);
