@@ -13,6 +13,7 @@
 #include "core/overlap_2d.h"
 #include "core/piece_width.h"
 #include "core/seams.h"
+#include "core/union_find.h"
 
 namespace papercraft {
 namespace {
@@ -361,6 +362,30 @@ std::vector<Hinge> hinges_of(const std::vector<PairCandidate>& pairs,
   return hinges;
 }
 
+// The triangles `chosen` of `strip` as a strip of their own, laid out as they lie, their
+// vertices renumbered (unused ones dropped).
+FlatStrip sub_strip(const FlatStrip& strip, const std::vector<Triangle>& chosen) {
+  FlatStrip part;
+  part.id = strip.id;
+  part.source_strip = strip.source_strip;
+  const bool has_uvs = strip.uvs.size() == strip.vertices2d.size();
+  std::vector<int> index(strip.vertices2d.size(), -1);
+  for (Triangle t : chosen) {
+    for (int& v : t) {
+      if (index[v] < 0) {
+        index[v] = static_cast<int>(part.vertices2d.size());
+        part.vertices2d.push_back(strip.vertices2d[v]);
+        part.vertices3d.push_back(strip.vertices3d[v]);
+        if (has_uvs) part.uvs.push_back(strip.uvs[v]);
+      }
+      v = index[v];
+    }
+    part.triangles.push_back(t);
+  }
+  part.boundary = flat_boundary(part.triangles);
+  return part;
+}
+
 // A strip no neighbour takes whole, taken apart into its triangles, each hinged to a
 // neighbour across one of its edges (a triangle whose neighbours are all its own siblings
 // waits until a sibling has been taken): where the union of the whole would overlap a
@@ -395,19 +420,7 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
   std::vector<FlatStrip> trial;
   trial.reserve(around.size() + crumb.triangles.size());
   for (int s : around) trial.push_back(strips[s]);
-  for (const Triangle& t : crumb.triangles) {
-    FlatStrip one;
-    one.id = crumb.id;
-    one.source_strip = crumb.source_strip;
-    for (int k = 0; k < 3; ++k) {
-      one.vertices2d.push_back(crumb.vertices2d[t[k]]);
-      one.vertices3d.push_back(crumb.vertices3d[t[k]]);
-      if (crumb.uvs.size() == crumb.vertices2d.size()) one.uvs.push_back(crumb.uvs[t[k]]);
-    }
-    one.triangles = {{0, 1, 2}};
-    one.boundary = flat_boundary(one.triangles);
-    trial.push_back(std::move(one));
-  }
+  for (const Triangle& t : crumb.triangles) trial.push_back(sub_strip(crumb, {t}));
   std::vector<bool> touched(around.size(), false);  // neighbours that took a triangle
   while (static_cast<int>(trial.size()) > n) {
     const std::vector<PairCandidate> pairs = shared_boundaries(trial);
@@ -459,10 +472,179 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
   return true;
 }
 
+// Whether the triangles around `vertex` form one fan (each joined to the next across an
+// edge), not two fans meeting at a point.
+bool one_fan(const std::vector<Triangle>& triangles, int vertex) {
+  std::vector<const Triangle*> fan;
+  for (const Triangle& t : triangles)
+    if (std::find(t.begin(), t.end(), vertex) != t.end()) fan.push_back(&t);
+  UnionFind around(fan.size());
+  for (std::size_t i = 0; i < fan.size(); ++i)
+    for (std::size_t j = i + 1; j < fan.size(); ++j) {
+      int common = 0;
+      for (int a : *fan[i]) common += std::find(fan[j]->begin(), fan[j]->end(), a) != fan[j]->end();
+      if (common >= 2) around.unite(i, j);
+    }
+  for (std::size_t i = 1; i < fan.size(); ++i)
+    if (around.find(i) != around.find(0)) return false;
+  return true;
+}
+
+// Triangle `gone` of `strip` taken away, with whatever it alone held to the rest (a ruled
+// strip is a path of triangles: taking one takes the end beyond it too): `rest` is the
+// largest piece left (by area), `taken` the triangle with the smaller pieces. False when
+// nothing is left or the rest would meet the part taken only at a point of its own.
+bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, FlatStrip& taken) {
+  const int n = static_cast<int>(strip.triangles.size());
+  if (n < 2) return false;
+  std::map<std::pair<int, int>, std::vector<int>> by_edge;
+  for (int t = 0; t < n; ++t) {
+    if (t == static_cast<int>(gone)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = strip.triangles[t][k], b = strip.triangles[t][(k + 1) % 3];
+      by_edge[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  }
+  UnionFind pieces(n);
+  for (const auto& [edge, users] : by_edge)
+    for (std::size_t i = 1; i < users.size(); ++i) pieces.unite(users[0], users[i]);
+  std::map<std::size_t, double> area;
+  for (int t = 0; t < n; ++t) {
+    if (t == static_cast<int>(gone)) continue;
+    const Triangle& tri = strip.triangles[t];
+    const Vec2 u = strip.vertices2d[tri[1]] - strip.vertices2d[tri[0]];
+    const Vec2 v = strip.vertices2d[tri[2]] - strip.vertices2d[tri[0]];
+    area[pieces.find(t)] += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+  }
+  std::size_t largest = 0;
+  double most = -1.0;
+  for (const auto& [root, a] : area)
+    if (a > most) largest = root, most = a;
+  std::vector<Triangle> kept, moved;
+  std::set<int> moved_corners;
+  for (int t = 0; t < n; ++t) {
+    const bool stays = t != static_cast<int>(gone) && pieces.find(t) == largest;
+    (stays ? kept : moved).push_back(strip.triangles[t]);
+    if (!stays) moved_corners.insert(strip.triangles[t].begin(), strip.triangles[t].end());
+  }
+  for (int corner : moved_corners)
+    if (!one_fan(kept, corner)) return false;
+  rest = sub_strip(strip, kept);
+  taken = sub_strip(strip, moved);
+  return true;
+}
+
+// A small strip that no neighbour takes, grown instead: it takes its neighbours' triangles
+// that share an edge with it, one at a time, each folded out of it across every edge it
+// shares (the triangles sharing the most edges first, so it grows compact, then the
+// largest). A triangle takes with it the part of its strip it alone held on (the end of a
+// ruled strip). It is taken only where it lands on no triangle of the strip, every edge
+// shared welds (no slit opens in the strip) and what is left of the neighbour is at least
+// min_area. Kept only when the strip reaches min_area within kMostTaken triangles and
+// neither it nor a neighbour it took from ends up narrower than min_width over more than
+// narrow_share of its area (or more than it was); otherwise `strips` is left as it was and
+// false returned.
+bool grow_from_neighbours(std::vector<FlatStrip>& strips, int small, double min_area,
+                          double min_width, double narrow_share, const MergeOptions& options) {
+  constexpr std::size_t kMostTaken = 64;
+  auto share_of = [&](const FlatStrip& strip) {
+    return min_width > 0.0 ? narrow_area_fraction(strip.vertices2d, strip.triangles, min_width)
+                           : 0.0;
+  };
+  FlatStrip grown = strips[small];
+  const std::size_t first_size = grown.triangles.size();
+  const double grown_share = share_of(grown);
+  std::map<int, FlatStrip> donors;  // strip index -> what is left of it
+  auto current = [&](int s) -> const FlatStrip& {
+    auto it = donors.find(s);
+    return it == donors.end() ? strips[s] : it->second;
+  };
+  std::set<std::array<double, 9>> refused;  // triangles (their 3D corners) that found no place
+  auto corners_key = [](const FlatStrip& strip, const Triangle& t) {
+    std::array<std::array<double, 3>, 3> c;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = strip.vertices3d[t[k]];
+      c[k] = {p.x(), p.y(), p.z()};
+    }
+    std::sort(c.begin(), c.end());
+    return std::array<double, 9>{c[0][0], c[0][1], c[0][2], c[1][0], c[1][1],
+                                 c[1][2], c[2][0], c[2][1], c[2][2]};
+  };
+  struct Candidate {
+    int strip;
+    std::size_t triangle;
+    int shared;
+    double area;
+  };
+  while (flat_area(grown) < min_area) {
+    std::set<std::array<double, 6>> rim;
+    for (const BoundaryEdge& e : grown.boundary)
+      rim.insert(exact_key(grown.vertices3d[e.v0], grown.vertices3d[e.v1]));
+    // The neighbours' triangles on the rim: those with a boundary edge on it.
+    std::vector<Candidate> candidates;
+    for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+      if (s == small) continue;
+      const FlatStrip& strip = current(s);
+      std::set<std::pair<int, int>> on_rim;  // boundary edges (v0, v1) on the rim
+      for (const BoundaryEdge& e : strip.boundary)
+        if (rim.count(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1])))
+          on_rim.insert({e.v0, e.v1});
+      if (on_rim.empty()) continue;
+      for (std::size_t t = 0; t < strip.triangles.size(); ++t) {
+        const Triangle& tri = strip.triangles[t];
+        int shared = 0;
+        for (int k = 0; k < 3; ++k) shared += on_rim.count({tri[k], tri[(k + 1) % 3]});
+        if (shared == 0 || refused.count(corners_key(strip, tri))) continue;
+        const Vec2 u = strip.vertices2d[tri[1]] - strip.vertices2d[tri[0]];
+        const Vec2 v = strip.vertices2d[tri[2]] - strip.vertices2d[tri[0]];
+        candidates.push_back({s, t, shared, 0.5 * std::abs(u.x() * v.y() - u.y() * v.x())});
+      }
+    }
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) {
+                       return a.shared != b.shared ? a.shared > b.shared : a.area > b.area;
+                     });
+    bool took = false;
+    for (const Candidate& candidate : candidates) {
+      const FlatStrip& donor = current(candidate.strip);
+      const Triangle& tri = donor.triangles[candidate.triangle];
+      FlatStrip rest, part;
+      const std::vector<PairCandidate> pairs =
+          take_triangle(donor, candidate.triangle, rest, part) && flat_area(rest) >= min_area &&
+                  grown.triangles.size() + part.triangles.size() <= first_size + kMostTaken
+              ? shared_boundaries({grown, part})
+              : std::vector<PairCandidate>{};
+      // Every shared edge welds: the strip gains only the part's corners off its rim.
+      std::set<int> on_rim;
+      for (const PairCandidate& pair : pairs)
+        for (const Chain& chain : pair.chains) on_rim.insert(chain.y.begin(), chain.y.end());
+      FlatStrip merged;
+      if (pairs.empty() || !try_merge(grown, part, pairs[0].chains, options, merged) ||
+          merged.vertices2d.size() !=
+              grown.vertices2d.size() + part.vertices2d.size() - on_rim.size()) {
+        refused.insert(corners_key(donor, tri));
+        continue;
+      }
+      grown = std::move(merged);
+      donors[candidate.strip] = std::move(rest);
+      took = true;
+      break;
+    }
+    if (!took) return false;
+  }
+  if (share_of(grown) > std::max(grown_share, narrow_share)) return false;
+  for (const auto& [s, rest] : donors)
+    if (share_of(rest) > std::max(share_of(strips[s]), narrow_share)) return false;
+  strips[small] = std::move(grown);
+  for (auto& [s, rest] : donors) strips[s] = std::move(rest);
+  return true;
+}
+
 }  // namespace
 
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
-                                         const MergeOptions& options, std::vector<int>* left) {
+                                         const MergeOptions& options, std::vector<int>* left,
+                                         double min_width) {
   validate(strips, options);
   if (left) left->clear();
   if (!(min_area > 0.0)) return strips;
@@ -493,6 +675,9 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
       break;
     }
     if (!joined) joined = absorb_by_triangles(strips, small, options);
+    if (!joined)
+      joined = grow_from_neighbours(strips, small, min_area, min_width, options.narrow_join_share,
+                                    options);
     if (!joined) given_up.insert(strips[small].id);
   }
   if (left) left->assign(given_up.begin(), given_up.end());

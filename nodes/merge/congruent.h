@@ -60,13 +60,23 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// of a neighbour over one of its edges, longest first; a triangle next to its siblings only
 /// waits for one of them to be taken. That is kept only when every triangle finds a place and
 /// at most one edge between two of its triangles is opened (each one a new seam to glue,
-/// often tiny and in a notch without room for a tab).
+/// often tiny and in a notch without room for a tab). A small strip that cannot be taken
+/// apart either grows instead: it takes its neighbours' triangles that share an edge with it,
+/// one at a time (those sharing the most edges first, then the largest), each folded out of it
+/// over the edges it shares, until it reaches `min_area`; a triangle takes with it what its
+/// neighbour held only through it (the end of a ruled strip beyond it), so the neighbour stays
+/// one piece. It is taken only where it lands on no other triangle of the strip, every edge
+/// shared welds (no slit) and the neighbour keeps at least `min_area`. The growth is kept
+/// only where it reaches `min_area` within 64 triangles and neither the strip nor a neighbour
+/// it took from ends up narrower than `min_width` over more than options.narrow_join_share of
+/// its area (or than before; `min_width` 0: not checked). The 3D surface is unchanged: only
+/// which piece prints a triangle moves, so the seam between them moves with it.
 /// The ids of small strips left go to `left` (when given); then label_seams runs on the
 /// result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options = {},
-                                         std::vector<int>* left = nullptr);
+                                         std::vector<int>* left = nullptr, double min_width = 0.0);
 
 /// Joins each flat strip narrower than `min_width` (model units) over more than `narrow_share`
 /// of its area (narrow_area_fraction: a band along a thin feature, a fan of long thin

@@ -107,8 +107,8 @@ void register_merge_congruent(Registry& registry) {
                     strips.flat = merge_congruent(std::move(strips.flat), options);
                     const PieceLimits limits = in.model->piece_limits();
                     std::vector<int> small;
-                    strips.flat =
-                        join_small_strips(std::move(strips.flat), limits.min_area, options, &small);
+                    strips.flat = join_small_strips(std::move(strips.flat), limits.min_area,
+                                                    options, &small, limits.min_width);
                     strips.flat = join_narrow_strips(std::move(strips.flat), limits.min_width,
                                                      options.narrow_join_share, options);
                     note_unbuildable_pieces(*in.model, strips.flat, small);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -30,6 +31,13 @@ std::size_t triangle_count(const std::vector<FlatStrip>& strips) {
   std::size_t count = 0;
   for (const FlatStrip& s : strips) count += s.triangles.size();
   return count;
+}
+
+// The area of a strip laid flat with counter-clockwise triangles (expect_valid checks that).
+double area_of(const FlatStrip& strip) {
+  double sum = 0.0;
+  for (const Triangle& t : strip.triangles) sum += signed_area(strip, t);
+  return sum;
 }
 
 void expect_valid(const std::vector<FlatStrip>& strips) {
@@ -271,6 +279,61 @@ TEST(JoinSmallStrips, CrumbWithNoFreeSideStaysAndIsNamed) {
 }
 
 // The floor a-b-c-d (at z = 0, corners counter-clockwise), laid out in the plane as it lies.
+// A crumb at a saddle: four triangles around a vertex whose angles there add up to about 375
+// degrees. X is three of them laid flat as a fan (about 272 degrees) with one more triangle on
+// the outer edge of its first; the fourth is the crumb. Folded out over either edge it shares
+// with X, the crumb lands on X's other end, and a single triangle cannot be taken apart; so it
+// grows instead, taking X's first triangle together with the triangle X held only through it.
+TEST(JoinSmallStrips, CrumbAtASaddleGrowsByTakingItsNeighboursEnd) {
+  constexpr double kDegree = M_PI / 180.0;
+  const double azimuth[4] = {0, 100, 190, 280}, elevation[4] = {15, -15, 15, -15};
+  std::vector<Vec3> p;
+  for (int k = 0; k < 4; ++k)
+    p.emplace_back(std::cos(azimuth[k] * kDegree) * std::cos(elevation[k] * kDegree),
+                   std::sin(azimuth[k] * kDegree) * std::cos(elevation[k] * kDegree),
+                   std::sin(elevation[k] * kDegree));
+  const Vec3 apex(0, 0, 0);
+  auto angle = [&](int i, int j) { return std::acos(p[i].dot(p[j])); };  // at the apex
+  ASSERT_GT(angle(0, 1) + angle(1, 2) + angle(2, 3) + angle(3, 0), 2 * M_PI + 10 * kDegree);
+  auto at = [](double turn) { return Vec2(std::cos(turn), std::sin(turn)); };
+
+  // X: the fan apex, p1, p2, p3, p0 from p1 at angle 0, and (p1, p1 + p2, p2) beyond p1-p2
+  // (p1 + p2 lies in the plane of apex, p1, p2, so it lands at their images' sum).
+  FlatStrip x;
+  x.id = 0;
+  x.source_strip = 0;
+  x.vertices3d = {apex, p[1], p[2], p[3], p[0], p[1] + p[2]};
+  const double turn2 = angle(1, 2), turn3 = turn2 + angle(2, 3), turn0 = turn3 + angle(3, 0);
+  x.vertices2d = {Vec2(0, 0), at(0), at(turn2), at(turn3), at(turn0), at(0) + at(turn2)};
+  x.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {1, 5, 2}};
+  ASSERT_EQ(count_overlapping_pairs(x), 0);
+  expect_isometric(x);
+  // The crumb (apex, p0, p1), laid out on its own.
+  FlatStrip crumb;
+  crumb.id = 1;
+  crumb.source_strip = 1;
+  crumb.vertices3d = {apex, p[0], p[1]};
+  crumb.vertices2d = {Vec2(0, 0), at(0), at(angle(0, 1))};
+  crumb.triangles = {{0, 1, 2}};
+  const double crumb_area = area_of(crumb);
+  ASSERT_LT(crumb_area, 0.5);
+
+  std::vector<int> left;
+  const double min_area = 0.9;  // X keeps its last two triangles (about 1.0)
+  const auto joined = join_small_strips({x, crumb}, min_area, {}, &left);
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_TRUE(left.empty());
+  EXPECT_EQ(triangle_count(joined), 5u);
+  expect_valid(joined);
+  for (const FlatStrip& strip : joined) EXPECT_GE(area_of(strip), min_area) << strip.id;
+  // The crumb kept its id and now holds X's first triangle and the one beyond it.
+  const FlatStrip& grown = joined[0].id == 1 ? joined[0] : joined[1];
+  ASSERT_EQ(grown.id, 1);
+  EXPECT_EQ(grown.triangles.size(), 3u);
+  EXPECT_NE(std::find(grown.vertices3d.begin(), grown.vertices3d.end(), p[1] + p[2]),
+            grown.vertices3d.end());
+}
+
 FlatStrip flat_floor(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   FlatStrip floor;
   floor.id = 0;
@@ -416,18 +479,13 @@ TEST(JoinNarrowStrips, BandIsKeptOnANeighbourWhereTheUnionIsNarrowOverNoMoreArea
   auto share = [&](const FlatStrip& s) {
     return narrow_area_fraction(s.vertices2d, s.triangles, width);
   };
-  auto area = [](const FlatStrip& s) {  // counter-clockwise triangles (expect_valid)
-    double sum = 0.0;
-    for (const Triangle& t : s.triangles) sum += signed_area(s, t);
-    return sum;
-  };
   EXPECT_LT(share(floor), 0.25);
   EXPECT_EQ(share(wall), 1.0);
   const auto joined = join_narrow_strips({floor, wall}, width, 0.25);
   ASSERT_EQ(joined.size(), 1u);
   expect_valid(joined);
   EXPECT_GT(share(joined[0]), 0.25);
-  EXPECT_LE(share(joined[0]) * area(joined[0]), share(floor) * area(floor) + area(wall));
+  EXPECT_LE(share(joined[0]) * area_of(joined[0]), share(floor) * area_of(floor) + area_of(wall));
 }
 
 // Two bands side by side: joining them would leave a piece as narrow as each, so both stay.
