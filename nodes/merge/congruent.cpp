@@ -534,24 +534,28 @@ bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, Fl
   return true;
 }
 
-// A small strip that no neighbour takes, grown instead: it takes its neighbours' triangles
-// that share an edge with it, one at a time, each folded out of it across every edge it
-// shares (the triangles sharing the most edges first, so it grows compact, then the
-// largest). A triangle takes with it the part of its strip it alone held on (the end of a
-// ruled strip). It is taken only where it lands on no triangle of the strip, every edge
-// shared welds (no slit opens in the strip) and what is left of the neighbour is at least
-// min_area. Kept only when the strip reaches min_area within kMostTaken triangles and
-// neither it nor a neighbour it took from ends up narrower than min_width over more than
-// narrow_share of its area (or more than it was); otherwise `strips` is left as it was and
-// false returned.
-bool grow_from_neighbours(std::vector<FlatStrip>& strips, int small, double min_area,
-                          double min_width, double narrow_share, const MergeOptions& options) {
+// A strip grown from its neighbours (a crumb no neighbour takes, a band no hinge takes): it
+// takes their triangles that share an edge with it, one at a time, each folded out of it
+// across every edge it shares; of those that find a place, the one leaving it most compact.
+// A triangle takes with it the part of its strip it alone held on (the end of a ruled strip).
+// It is taken only where it lands on no triangle of the strip, every edge shared welds (no
+// slit opens in the strip) and what is left of the neighbour is at least min_area. Grows
+// until the strip reaches min_area (kMinArea) or is narrower than min_width over at most
+// narrow_share of its area (kWide). Kept only when that is reached within kMostTaken
+// triangles and neither the strip nor a neighbour it took from ends up narrower than
+// min_width over more than narrow_share of its area (or more than it was); otherwise
+// `strips` is left as it was and false returned.
+enum class GrowUntil { kMinArea, kWide };
+
+bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil until,
+                          double min_area, double min_width, double narrow_share,
+                          const MergeOptions& options) {
   constexpr std::size_t kMostTaken = 64;
   auto share_of = [&](const FlatStrip& strip) {
     return min_width > 0.0 ? narrow_area_fraction(strip.vertices2d, strip.triangles, min_width)
                            : 0.0;
   };
-  FlatStrip grown = strips[small];
+  FlatStrip grown = strips[index];
   const std::size_t first_size = grown.triangles.size();
   const double grown_share = share_of(grown);
   std::map<int, FlatStrip> donors;  // strip index -> what is left of it
@@ -573,17 +577,19 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int small, double min_
   struct Candidate {
     int strip;
     std::size_t triangle;
-    int shared;
-    double area;
   };
-  while (flat_area(grown) < min_area) {
+  auto reached = [&] {
+    return until == GrowUntil::kMinArea ? flat_area(grown) >= min_area
+                                        : share_of(grown) <= narrow_share;
+  };
+  while (!reached()) {
     std::set<std::array<double, 6>> rim;
     for (const BoundaryEdge& e : grown.boundary)
       rim.insert(exact_key(grown.vertices3d[e.v0], grown.vertices3d[e.v1]));
     // The neighbours' triangles on the rim: those with a boundary edge on it.
     std::vector<Candidate> candidates;
     for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
-      if (s == small) continue;
+      if (s == index) continue;
       const FlatStrip& strip = current(s);
       std::set<std::pair<int, int>> on_rim;  // boundary edges (v0, v1) on the rim
       for (const BoundaryEdge& e : strip.boundary)
@@ -592,19 +598,16 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int small, double min_
       if (on_rim.empty()) continue;
       for (std::size_t t = 0; t < strip.triangles.size(); ++t) {
         const Triangle& tri = strip.triangles[t];
-        int shared = 0;
-        for (int k = 0; k < 3; ++k) shared += on_rim.count({tri[k], tri[(k + 1) % 3]});
-        if (shared == 0 || refused.count(corners_key(strip, tri))) continue;
-        const Vec2 u = strip.vertices2d[tri[1]] - strip.vertices2d[tri[0]];
-        const Vec2 v = strip.vertices2d[tri[2]] - strip.vertices2d[tri[0]];
-        candidates.push_back({s, t, shared, 0.5 * std::abs(u.x() * v.y() - u.y() * v.x())});
+        bool shares = false;
+        for (int k = 0; k < 3; ++k) shares = shares || on_rim.count({tri[k], tri[(k + 1) % 3]});
+        if (shares && !refused.count(corners_key(strip, tri))) candidates.push_back({s, t});
       }
     }
-    std::stable_sort(candidates.begin(), candidates.end(),
-                     [](const Candidate& a, const Candidate& b) {
-                       return a.shared != b.shared ? a.shared > b.shared : a.area > b.area;
-                     });
-    bool took = false;
+    // Of the triangles that find a place, the one leaving the strip most compact (the least
+    // squared perimeter per area in the plane: a round piece is wide, a long one narrow).
+    FlatStrip best, best_rest;
+    int best_strip = -1;
+    double best_score = 0.0;
     for (const Candidate& candidate : candidates) {
       const FlatStrip& donor = current(candidate.strip);
       const Triangle& tri = donor.triangles[candidate.triangle];
@@ -625,17 +628,23 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int small, double min_
         refused.insert(corners_key(donor, tri));
         continue;
       }
-      grown = std::move(merged);
-      donors[candidate.strip] = std::move(rest);
-      took = true;
-      break;
+      double perimeter = 0.0;
+      for (const BoundaryEdge& e : merged.boundary)
+        perimeter += (merged.vertices2d[e.v1] - merged.vertices2d[e.v0]).norm();
+      const double score = perimeter * perimeter / flat_area(merged);
+      if (best_strip >= 0 && score >= best_score) continue;
+      best = std::move(merged);
+      best_rest = std::move(rest);
+      best_strip = candidate.strip, best_score = score;
     }
-    if (!took) return false;
+    if (best_strip < 0) return false;
+    grown = std::move(best);
+    donors[best_strip] = std::move(best_rest);
   }
   if (share_of(grown) > std::max(grown_share, narrow_share)) return false;
   for (const auto& [s, rest] : donors)
     if (share_of(rest) > std::max(share_of(strips[s]), narrow_share)) return false;
-  strips[small] = std::move(grown);
+  strips[index] = std::move(grown);
   for (auto& [s, rest] : donors) strips[s] = std::move(rest);
   return true;
 }
@@ -676,8 +685,8 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     }
     if (!joined) joined = absorb_by_triangles(strips, small, options);
     if (!joined)
-      joined = grow_from_neighbours(strips, small, min_area, min_width, options.narrow_join_share,
-                                    options);
+      joined = grow_from_neighbours(strips, small, GrowUntil::kMinArea, min_area, min_width,
+                                    options.narrow_join_share, options);
     if (!joined) given_up.insert(strips[small].id);
   }
   if (left) left->assign(given_up.begin(), given_up.end());
@@ -716,7 +725,7 @@ int slit_points(const FlatStrip& merged, std::size_t first_added, double width) 
 
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options,
-                                          int most_hinges) {
+                                          int most_hinges, double min_area) {
   validate(strips, options);
   if (!(min_width > 0.0) || !(narrow_share >= 0.0) || most_hinges < 1) return strips;
   for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
@@ -787,6 +796,12 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
         }
     }
   }
+  // A strip still narrow grows instead, as a crumb does, until it is no longer narrow (a
+  // neighbour it takes from keeps min_area and gets no narrower than it was or than the
+  // bound). share[] of a neighbour taken from goes stale but stays an upper bound.
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s)
+    if (share[s] > narrow_share)
+      grow_from_neighbours(strips, s, GrowUntil::kWide, min_area, min_width, narrow_share, options);
   label_seams(strips);
   return strips;
 }

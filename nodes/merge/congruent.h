@@ -62,16 +62,16 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// at most one edge between two of its triangles is opened (each one a new seam to glue,
 /// often tiny and in a notch without room for a tab). A small strip that cannot be taken
 /// apart either grows instead: it takes its neighbours' triangles that share an edge with it,
-/// one at a time (those sharing the most edges first, then the largest), each folded out of it
-/// over the edges it shares, until it reaches `min_area`; a triangle takes with it what its
-/// neighbour held only through it (the end of a ruled strip beyond it), so the neighbour stays
-/// one piece. It is taken only where it lands on no other triangle of the strip, every edge
-/// shared welds (no slit) and the neighbour keeps at least `min_area`. The growth is kept
-/// only where it reaches `min_area` within 64 triangles and neither the strip nor a neighbour
-/// it took from ends up narrower than `min_width` over more than options.narrow_join_share of
-/// its area (or than before; `min_width` 0: not checked). The 3D surface is unchanged: only
-/// which piece prints a triangle moves, so the seam between them moves with it.
-/// The ids of small strips left go to `left` (when given); then label_seams runs on the
+/// one at a time (of those that find a place, the one leaving it most compact: the least
+/// squared perimeter per area in the plane), each folded out of it over the edges it shares, until
+/// it reaches `min_area`; a triangle takes with it what its neighbour held only through it (the end
+/// of a ruled strip beyond it), so the neighbour stays one piece. It is taken only where it lands
+/// on no other triangle of the strip, every edge shared welds (no slit) and the neighbour keeps at
+/// least `min_area`. The growth is kept only where it reaches `min_area` within 64 triangles and
+/// neither the strip nor a neighbour it took from ends up narrower than `min_width` over more than
+/// options.narrow_join_share of its area (or than before; `min_width` 0: not checked). The 3D
+/// surface is unchanged: only which piece prints a triangle moves, so the seam between them moves
+/// with it. The ids of small strips left go to `left` (when given); then label_seams runs on the
 /// result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
@@ -89,10 +89,14 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// The band then folds over the hinge and its other shared edges are seams of the union with
 /// itself. A strip no neighbour takes is passed over until a join makes a union beside it (new
 /// edges to fold over, a neighbour less narrow), then tried again; those left after that stay
-/// as they are. Then label_seams runs on the result.
+/// as they are. Each of those still narrow then grows as join_small_strips grows a crumb (its
+/// neighbours' triangles beside it, the one leaving it most compact first, each neighbour
+/// keeping at least `min_area` and getting no narrower than it was or than `narrow_share`),
+/// until it is narrow over at most `narrow_share`; within 64 triangles, or it stays as it is.
+/// Then label_seams runs on the result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},
-                                          int most_hinges = 256);
+                                          int most_hinges = 256, double min_area = 0.0);
 
 }  // namespace papercraft

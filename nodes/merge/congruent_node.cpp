@@ -110,7 +110,8 @@ void register_merge_congruent(Registry& registry) {
                     strips.flat = join_small_strips(std::move(strips.flat), limits.min_area,
                                                     options, &small, limits.min_width);
                     strips.flat = join_narrow_strips(std::move(strips.flat), limits.min_width,
-                                                     options.narrow_join_share, options);
+                                                     options.narrow_join_share, options, 256,
+                                                     limits.min_area);
                     note_unbuildable_pieces(*in.model, strips.flat, small);
                     record(*in.model, strips);
                     out.emit("out", std::move(strips));

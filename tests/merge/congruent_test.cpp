@@ -488,6 +488,70 @@ TEST(JoinNarrowStrips, BandIsKeptOnANeighbourWhereTheUnionIsNarrowOverNoMoreArea
   EXPECT_LE(share(joined[0]) * area_of(joined[0]), share(floor) * area_of(floor) + area_of(wall));
 }
 
+// A fan of five thin triangles (2 degrees each, radius 10) at a saddle: the rest of the fan
+// around its apex, X, spans about 357 degrees laid flat, so folded out over either edge it
+// shares with X the band lands on X's other end, and no hinge takes it. It grows instead,
+// taking X's triangle beside it, until it is no longer narrow.
+TEST(JoinNarrowStrips, FanAtASaddleNoHingeTakesGrowsWide) {
+  constexpr double kDegree = M_PI / 180.0, kRadius = 10.0, kWidth = 1.0;
+  auto rim = [&](double azimuth, double elevation) -> Vec3 {
+    return Vec3(std::cos(azimuth * kDegree) * std::cos(elevation * kDegree),
+                std::sin(azimuth * kDegree) * std::cos(elevation * kDegree),
+                std::sin(elevation * kDegree)) *
+           kRadius;
+  };
+  const Vec3 apex(0, 0, 0);
+  FlatStrip band;
+  band.id = 1;
+  band.source_strip = 1;
+  band.vertices3d = {apex};
+  band.vertices2d = {Vec2(0, 0)};
+  for (int i = 0; i <= 5; ++i) {
+    band.vertices3d.push_back(rim(2.0 * i, 0));
+    band.vertices2d.push_back(kRadius *
+                              Vec2(std::cos(2.0 * i * kDegree), std::sin(2.0 * i * kDegree)));
+    if (i > 0) band.triangles.push_back({0, i, i + 1});
+  }
+  // X: from the band's last ruling round to its first in eight steps, its rim points up and
+  // down by 5 degrees (so its angles at the apex add up to more than the 350 degrees left).
+  FlatStrip x;
+  x.id = 0;
+  x.source_strip = 0;
+  x.vertices3d = {apex};
+  x.vertices2d = {Vec2(0, 0)};
+  double turn = 0.0;
+  for (int k = 0; k <= 8; ++k) {
+    const double elevation = k == 0 || k == 8 ? 0.0 : (k % 2 ? -5.0 : 5.0);
+    x.vertices3d.push_back(k == 8 ? band.vertices3d[1] : rim(10.0 + 43.75 * k, elevation));
+    if (k > 0) {
+      const Vec3& a = x.vertices3d[k];
+      const Vec3& b = x.vertices3d[k + 1];
+      turn += std::acos(a.dot(b) / (a.norm() * b.norm()));
+      x.triangles.push_back({0, k, k + 1});
+    }
+    x.vertices2d.push_back(kRadius * Vec2(std::cos(turn), std::sin(turn)));
+  }
+  ASSERT_GT(turn, 352 * kDegree);
+  ASSERT_LT(turn, 359 * kDegree);
+  ASSERT_EQ(count_overlapping_pairs(x), 0);
+  expect_isometric(x);
+  expect_isometric(band);
+  auto share = [&](const FlatStrip& s) {
+    return narrow_area_fraction(s.vertices2d, s.triangles, kWidth);
+  };
+  ASSERT_GT(share(band), 0.25);
+  ASSERT_LT(share(x), 0.25);
+
+  const auto joined = join_narrow_strips({x, band}, kWidth, 0.25, {}, 256, 1.0);
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), 13u);
+  expect_valid(joined);
+  const FlatStrip& grown = joined[0].id == 1 ? joined[0] : joined[1];
+  ASSERT_EQ(grown.id, 1);
+  EXPECT_GT(grown.triangles.size(), 5u);
+  for (const FlatStrip& strip : joined) EXPECT_LE(share(strip), 0.25) << strip.id;
+}
+
 // Two bands side by side: joining them would leave a piece as narrow as each, so both stay.
 TEST(JoinNarrowStrips, TwoBandsAreNotJoinedIntoOneAsNarrow) {
   const int n = 16;
