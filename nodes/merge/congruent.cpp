@@ -541,10 +541,10 @@ bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, Fl
 // It is taken only where it lands on no triangle of the strip, every edge shared welds (no
 // slit opens in the strip) and what is left of the neighbour is at least min_area. Grows
 // until the strip reaches min_area (kMinArea) or is narrower than min_width over at most
-// narrow_share of its area (kWide). Kept only when that is reached within kMostTaken
-// triangles and neither the strip nor a neighbour it took from ends up narrower than
-// min_width over more than narrow_share of its area (or more than it was); otherwise
-// `strips` is left as it was and false returned.
+// narrow_share of its area (kWide), and neither the strip nor a neighbour it took from is
+// narrower than min_width over more than narrow_share of its area (or more than it was).
+// Kept only when that is reached within kMostTaken triangles; otherwise `strips` is left as
+// it was and false returned.
 enum class GrowUntil { kMinArea, kWide };
 
 bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil until,
@@ -578,11 +578,37 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
     int strip;
     std::size_t triangle;
   };
-  auto reached = [&] {
-    return until == GrowUntil::kMinArea ? flat_area(grown) >= min_area
-                                        : share_of(grown) <= narrow_share;
+  // A growth is acceptable when neither the strip nor a neighbour it took from is narrower
+  // than min_width over more of its area than before (or than narrow_share). The shares of
+  // the neighbours, before and as left, are kept as they are measured.
+  std::map<int, double> share_before, share_left;
+  auto acceptable = [&](double share) {
+    if (share > std::max(grown_share, narrow_share)) return false;
+    for (const auto& [s, rest] : donors) {
+      if (!share_before.count(s)) share_before[s] = share_of(strips[s]);
+      if (!share_left.count(s)) share_left[s] = share_of(rest);
+      if (share_left[s] > std::max(share_before[s], narrow_share)) return false;
+    }
+    return true;
   };
-  while (!reached()) {
+  // A crumb stops at the first acceptable growth past min_area; one that is not (a neighbour
+  // it took from got narrower) goes on growing, within the same kMostTaken, until one is. A
+  // band stops once it is narrow over at most narrow_share and acceptable. Either gives up
+  // once kPatience triangles in a row bring it no closer: a band that stays narrow (a strip
+  // along a thin feature) would only pay for the rest of kMostTaken and fail anyway.
+  constexpr int kPatience = 16;
+  double least_share = grown_share;
+  int since_least = 0;
+  while (true) {
+    if (until == GrowUntil::kWide || flat_area(grown) >= min_area) {
+      const double share = share_of(grown);
+      if ((until == GrowUntil::kMinArea || share <= narrow_share) && acceptable(share)) break;
+      if (until == GrowUntil::kWide && share < least_share) {
+        least_share = share, since_least = 0;
+      } else if (++since_least >= kPatience) {
+        return false;
+      }
+    }
     std::set<std::array<double, 6>> rim;
     for (const BoundaryEdge& e : grown.boundary)
       rim.insert(exact_key(grown.vertices3d[e.v0], grown.vertices3d[e.v1]));
@@ -640,10 +666,8 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
     if (best_strip < 0) return false;
     grown = std::move(best);
     donors[best_strip] = std::move(best_rest);
+    share_left.erase(best_strip);
   }
-  if (share_of(grown) > std::max(grown_share, narrow_share)) return false;
-  for (const auto& [s, rest] : donors)
-    if (share_of(rest) > std::max(share_of(strips[s]), narrow_share)) return false;
   strips[index] = std::move(grown);
   for (auto& [s, rest] : donors) strips[s] = std::move(rest);
   return true;
@@ -803,6 +827,19 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     if (share[s] > narrow_share)
       grow_from_neighbours(strips, s, GrowUntil::kWide, min_area, min_width, narrow_share, options);
   label_seams(strips);
+  return strips;
+}
+
+std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strips, double min_area,
+                                                    double min_width, const MergeOptions& options,
+                                                    std::vector<int>* left) {
+  std::vector<int> small;
+  strips = join_small_strips(std::move(strips), min_area, options, &small, min_width);
+  strips = join_narrow_strips(std::move(strips), min_width, options.narrow_join_share, options, 256,
+                              min_area);
+  if (!small.empty())
+    strips = join_small_strips(std::move(strips), min_area, options, &small, min_width);
+  if (left) *left = std::move(small);
   return strips;
 }
 

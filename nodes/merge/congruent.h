@@ -67,13 +67,13 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// it reaches `min_area`; a triangle takes with it what its neighbour held only through it (the end
 /// of a ruled strip beyond it), so the neighbour stays one piece. It is taken only where it lands
 /// on no other triangle of the strip, every edge shared welds (no slit) and the neighbour keeps at
-/// least `min_area`. The growth is kept only where it reaches `min_area` within 64 triangles and
-/// neither the strip nor a neighbour it took from ends up narrower than `min_width` over more than
-/// options.narrow_join_share of its area (or than before; `min_width` 0: not checked). The 3D
-/// surface is unchanged: only which piece prints a triangle moves, so the seam between them moves
-/// with it. The ids of small strips left go to `left` (when given); then label_seams runs on the
-/// result.
-/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+/// least `min_area`. It grows until it reaches `min_area` and neither it nor a neighbour it took
+/// from is narrower than `min_width` over more than options.narrow_join_share of its area (or
+/// than before; `min_width` 0: not checked): past `min_area` it goes on growing until that holds,
+/// giving up once 16 triangles in a row bring no such growth. Kept only within 64 triangles.
+/// The 3D surface is unchanged: only which piece prints a triangle moves, so the seam between
+/// them moves with it. The ids of small strips left go to `left` (when given); then label_seams
+/// runs on the result. \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options = {},
                                          std::vector<int>* left = nullptr, double min_width = 0.0);
@@ -92,11 +92,22 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// as they are. Each of those still narrow then grows as join_small_strips grows a crumb (its
 /// neighbours' triangles beside it, the one leaving it most compact first, each neighbour
 /// keeping at least `min_area` and getting no narrower than it was or than `narrow_share`),
-/// until it is narrow over at most `narrow_share`; within 64 triangles, or it stays as it is.
-/// Then label_seams runs on the result.
+/// until it is narrow over at most `narrow_share`; within 64 triangles, and giving up once 16
+/// taken in a row leave it no less narrow, or it stays as it is. Then label_seams runs on the
+/// result.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},
                                           int most_hinges = 256, double min_area = 0.0);
+
+/// The merge node's joins after merge_congruent: join_small_strips, then join_narrow_strips
+/// (at most 256 hinges a strip), then join_small_strips once more where crumbs were left, since
+/// the narrow joins change their neighbours (a union to fold onto, a neighbour large enough to
+/// give triangles). The ids of the small strips still left go to `left` (when given).
+/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strips, double min_area,
+                                                    double min_width,
+                                                    const MergeOptions& options = {},
+                                                    std::vector<int>* left = nullptr);
 
 }  // namespace papercraft

@@ -107,11 +107,8 @@ void register_merge_congruent(Registry& registry) {
                     strips.flat = merge_congruent(std::move(strips.flat), options);
                     const PieceLimits limits = in.model->piece_limits();
                     std::vector<int> small;
-                    strips.flat = join_small_strips(std::move(strips.flat), limits.min_area,
-                                                    options, &small, limits.min_width);
-                    strips.flat = join_narrow_strips(std::move(strips.flat), limits.min_width,
-                                                     options.narrow_join_share, options, 256,
-                                                     limits.min_area);
+                    strips.flat = join_small_and_narrow_strips(
+                        std::move(strips.flat), limits.min_area, limits.min_width, options, &small);
                     note_unbuildable_pieces(*in.model, strips.flat, small);
                     record(*in.model, strips);
                     out.emit("out", std::move(strips));

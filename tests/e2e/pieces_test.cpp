@@ -19,6 +19,7 @@
 #include "core/piece_width.h"
 #include "nodes/layout/pages.h"
 #include "support/brute_force_hausdorff.h"
+#include "support/flat_strips_json.h"
 #include "support/pattern_checks.h"
 #include "support/pipeline_run.h"
 #include "support/temp_dir.h"
@@ -26,6 +27,7 @@
 namespace papercraft {
 namespace {
 
+using testing::read_flat_strips;
 using testing::run_pipeline;
 
 void expect_certified(const TriangleMesh& input, const testing::PipelineOutput& out) {
@@ -276,35 +278,6 @@ TEST(Pieces, EveryPieceFacesOutOnLibcgalDemoMeshes) {
     const auto out = run_pipeline(mesh, "2%", name);
     expect_exact_seams(out);
   }
-}
-
-// strips.json read back (the fields layout_pages uses).
-std::vector<FlatStrip> read_flat_strips(const nlohmann::json& strips) {
-  std::vector<FlatStrip> out;
-  for (const auto& s : strips) {
-    FlatStrip strip;
-    strip.id = s.at("id").get<int>();
-    strip.source_strip = s.at("source_strip").get<int>();
-    for (const auto& p : s.at("vertices3d"))
-      strip.vertices3d.emplace_back(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
-    for (const auto& p : s.at("vertices2d"))
-      strip.vertices2d.emplace_back(p[0].get<double>(), p[1].get<double>());
-    for (const auto& t : s.at("triangles"))
-      strip.triangles.push_back({t[0].get<int>(), t[1].get<int>(), t[2].get<int>()});
-    for (const auto& b : s.at("boundary")) {
-      BoundaryEdge e;
-      e.v0 = b.at("v0").get<int>();
-      e.v1 = b.at("v1").get<int>();
-      const std::string kind = b.at("kind").get<std::string>();
-      e.kind = kind == "seam" ? EdgeKind::Seam : kind == "open" ? EdgeKind::Open : EdgeKind::Cut;
-      e.label = b.value("label", std::string());
-      e.neighbour_strip = b.value("neighbour", -1);
-      e.partner_edge = b.value("partner_edge", -1);
-      strip.boundary.push_back(e);
-    }
-    out.push_back(std::move(strip));
-  }
-  return out;
 }
 
 // The distance from `at` to the edge (page mm).

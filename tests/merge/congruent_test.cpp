@@ -4,11 +4,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <map>
 #include <set>
+#include <string>
 
 #include "core/errors.h"
 #include "core/piece_width.h"
+#include "nlohmann/json.hpp"
 #include "nodes/unfold/sequential.h"
+#include "support/flat_strips_json.h"
 #include "support/unfold_checks.h"
 
 namespace papercraft {
@@ -332,6 +337,84 @@ TEST(JoinSmallStrips, CrumbAtASaddleGrowsByTakingItsNeighboursEnd) {
   EXPECT_EQ(grown.triangles.size(), 3u);
   EXPECT_NE(std::find(grown.vertices3d.begin(), grown.vertices3d.end(), p[1] + p[2]),
             grown.vertices3d.end());
+}
+
+// Flat strips of a real model as the merge node had them, with the node's limits (model
+// units): tests/merge/data, written from a run at 2% and 200 mm.
+struct MergeFixture {
+  double min_area = 0.0, min_width = 0.0;
+  std::vector<FlatStrip> strips;
+};
+
+MergeFixture read_fixture(const std::string& name) {
+  std::ifstream in(std::string(PAPERCRAFT_SOURCE_DIR) + "/tests/merge/data/" + name);
+  EXPECT_TRUE(in) << "missing test data " << name;
+  MergeFixture fixture;
+  if (!in) return fixture;
+  const nlohmann::json j = nlohmann::json::parse(in);
+  fixture.min_area = j.at("min_area").get<double>();
+  fixture.min_width = j.at("min_width").get<double>();
+  fixture.strips = testing::read_flat_strips(j.at("strips"));
+  return fixture;
+}
+
+const FlatStrip* find_id(const std::vector<FlatStrip>& strips, int id) {
+  for (const FlatStrip& s : strips)
+    if (s.id == id) return &s;
+  return nullptr;
+}
+
+// elephant-with-holes: crumb 79 (7 triangles, 55 mm^2) beside strip 78. Its first growths
+// past min_area leave a piece narrower than min_width over more of its area than before (and
+// than a quarter); it grows on until one does not, instead of giving up there.
+TEST(JoinSmallStrips, CrumbWhoseFirstGrowthLeavesItsNeighbourNarrowerGrowsOn) {
+  const MergeFixture fixture = read_fixture("elephant_with_holes_crumb_79.json");
+  ASSERT_EQ(fixture.strips.size(), 2u);
+  const FlatStrip* crumb = find_id(fixture.strips, 79);
+  ASSERT_NE(crumb, nullptr);
+  ASSERT_LT(area_of(*crumb), fixture.min_area);
+  auto share = [&](const FlatStrip& s) {
+    return narrow_area_fraction(s.vertices2d, s.triangles, fixture.min_width);
+  };
+  std::map<int, double> before;
+  for (const FlatStrip& s : fixture.strips) before[s.id] = share(s);
+
+  std::vector<int> left;
+  const auto joined =
+      join_small_strips(fixture.strips, fixture.min_area, {}, &left, fixture.min_width);
+  EXPECT_TRUE(left.empty());
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), triangle_count(fixture.strips));
+  expect_valid(joined);
+  for (const FlatStrip& strip : joined) {
+    EXPECT_GE(area_of(strip), fixture.min_area) << strip.id;
+    EXPECT_LE(share(strip), std::max(before[strip.id], 0.25) + 1e-12) << strip.id;
+  }
+}
+
+// b9_mesh: a part of three strips, each under min_area (about 2.1 times min_area together).
+// The first pass over the crumbs leaves crumb 187 (8 triangles) where it is; the narrow join
+// then changes the strips beside it, and the crumbs given up are tried again: 187 grows past
+// min_area and one crumb fewer is left.
+TEST(JoinSmallAndNarrowStrips, CrumbGivenUpIsTriedAgainAfterTheNarrowJoins) {
+  const MergeFixture fixture = read_fixture("b9_mesh_crumb_187_beside_a_band.json");
+  ASSERT_EQ(fixture.strips.size(), 3u);
+  ASSERT_NE(find_id(fixture.strips, 187), nullptr);
+  ASSERT_LT(area_of(*find_id(fixture.strips, 187)), fixture.min_area);
+  std::vector<int> first;
+  join_small_strips(fixture.strips, fixture.min_area, {}, &first, fixture.min_width);
+  ASSERT_EQ(std::count(first.begin(), first.end(), 187), 1);
+
+  std::vector<int> left;
+  const auto joined =
+      join_small_and_narrow_strips(fixture.strips, fixture.min_area, fixture.min_width, {}, &left);
+  EXPECT_EQ(std::count(left.begin(), left.end(), 187), 0);
+  EXPECT_LT(left.size(), first.size());
+  EXPECT_EQ(triangle_count(joined), triangle_count(fixture.strips));
+  expect_valid(joined);
+  for (const FlatStrip& strip : joined)
+    if (std::count(left.begin(), left.end(), strip.id) == 0)
+      EXPECT_GE(area_of(strip), fixture.min_area) << strip.id;
 }
 
 FlatStrip flat_floor(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
