@@ -58,36 +58,27 @@ void distance_transform(std::vector<double>& grid, int width, int height) {
 
 }  // namespace
 
-double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
-                            double width, const PieceWidthOptions& options) {
-  if (!(width > 0.0) || !std::isfinite(width))
-    throw InvalidInputException("narrow_area_fraction: width must be positive and finite");
-  const int count = static_cast<int>(points.size());
-  Vec2 lo = Vec2::Constant(kFar), hi = Vec2::Constant(-kFar);
-  for (const Triangle& t : triangles) {
-    for (int i : t) {
-      if (i < 0 || i >= count)
-        throw InvalidInputException("narrow_area_fraction: triangle index " + std::to_string(i) +
-                                    " out of range [0, " + std::to_string(count) + ")");
-      if (!points[i].allFinite())
-        throw InvalidInputException("narrow_area_fraction: point " + std::to_string(i) +
-                                    " is not finite");
-      lo = lo.cwiseMin(points[i]);
-      hi = hi.cwiseMax(points[i]);
-    }
-  }
-  if (triangles.empty()) return 0.0;
-  // A margin of one disc around the piece, so the outside surrounds it.
-  double cell = width * options.cell_fraction;
-  const Vec2 extent = hi - lo + Vec2::Constant(2 * width);
-  const double cells = (extent.x() / cell) * (extent.y() / cell);
-  if (cells > double(options.max_cells)) cell *= std::sqrt(cells / double(options.max_cells));
-  const int nx = static_cast<int>(std::ceil(extent.x() / cell)) + 1;
-  const int ny = static_cast<int>(std::ceil(extent.y() / cell)) + 1;
-  const Vec2 origin = lo - Vec2::Constant(width);
+namespace {
 
+// The raster both flat measures share: cells of size `cell` from `origin`, nx by ny.
+struct NarrowCells {
+  long inside = 0;  // cells whose centre a triangle covers
+  long narrow = 0;  // of those, the ones no disc of diameter `width` inside covers
+};
+
+// Counts over the cells whose index lies in [x_lo, x_hi] x [y_lo, y_hi] (all of them by
+// default); the triangles are checked by the callers.
+NarrowCells narrow_cells(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                         double width, const Vec2& origin, double cell, int nx, int ny,
+                         std::array<int, 4> count_in = {0, 1 << 30, 0, 1 << 30}) {
+  NarrowCells result;
+  auto counted = [&](std::size_t i) {
+    const int x = static_cast<int>(i % nx), y = static_cast<int>(i / nx);
+    return x >= count_in[0] && x <= count_in[1] && y >= count_in[2] && y <= count_in[3];
+  };
   // Inside: cell centres covered by a triangle.
   std::vector<char> inside(std::size_t(nx) * ny, 0);
+  bool any = false;
   for (const Triangle& t : triangles) {
     const Vec2 a = (points[t[0]] - origin) / cell, b = (points[t[1]] - origin) / cell,
                c = (points[t[2]] - origin) / cell;
@@ -106,13 +97,12 @@ double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<T
       for (int x = x0; x <= x1; ++x) {
         const Vec2 centre(x + 0.5, y + 0.5);
         if (edge(a, b, centre) >= 0 && edge(b, c, centre) >= 0 && edge(c, a, centre) >= 0)
-          inside[std::size_t(y) * nx + x] = 1;
+          inside[std::size_t(y) * nx + x] = 1, any = true;
       }
     }
   }
-  long inside_cells = 0;
-  for (char i : inside) inside_cells += i;
-  if (inside_cells == 0) return 0.0;
+  if (!any) return result;
+  for (std::size_t i = 0; i < inside.size(); ++i) result.inside += inside[i] && counted(i);
 
   // Distance of each inside cell to the outside: to the nearest outside cell centre less half
   // a cell (the outline lies between the two). A disc of radius r fits around a centre at
@@ -128,13 +118,87 @@ double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<T
     centres[i] = centre ? 0.0 : kFar;
     centre_cells += centre;
   }
-  if (centre_cells == 0) return 1.0;
+  if (centre_cells == 0) {
+    result.narrow = result.inside;
+    return result;
+  }
   // The opening: every cell within r of a centre.
   distance_transform(centres, nx, ny);
-  long narrow = 0;
   for (std::size_t i = 0; i < inside.size(); ++i)
-    narrow += inside[i] && std::sqrt(centres[i]) > radius;
-  return double(narrow) / double(inside_cells);
+    result.narrow += inside[i] && std::sqrt(centres[i]) > radius && counted(i);
+  return result;
+}
+
+void check_flat_piece(const char* what, const std::vector<Vec2>& points,
+                      const std::vector<Triangle>& triangles, double width) {
+  if (!(width > 0.0) || !std::isfinite(width))
+    throw InvalidInputException(std::string(what) + ": width must be positive and finite");
+  const int count = static_cast<int>(points.size());
+  for (const Triangle& t : triangles)
+    for (int i : t) {
+      if (i < 0 || i >= count)
+        throw InvalidInputException(std::string(what) + ": triangle index " + std::to_string(i) +
+                                    " out of range [0, " + std::to_string(count) + ")");
+      if (!points[i].allFinite())
+        throw InvalidInputException(std::string(what) + ": point " + std::to_string(i) +
+                                    " is not finite");
+    }
+}
+
+}  // namespace
+
+double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                            double width, const PieceWidthOptions& options) {
+  check_flat_piece("narrow_area_fraction", points, triangles, width);
+  if (triangles.empty()) return 0.0;
+  Vec2 lo = Vec2::Constant(kFar), hi = Vec2::Constant(-kFar);
+  for (const Triangle& t : triangles)
+    for (int i : t) lo = lo.cwiseMin(points[i]), hi = hi.cwiseMax(points[i]);
+  // A margin of one disc around the piece, so the outside surrounds it.
+  double cell = width * options.cell_fraction;
+  const Vec2 extent = hi - lo + Vec2::Constant(2 * width);
+  const double cells = (extent.x() / cell) * (extent.y() / cell);
+  if (cells > double(options.max_cells)) cell *= std::sqrt(cells / double(options.max_cells));
+  const int nx = static_cast<int>(std::ceil(extent.x() / cell)) + 1;
+  const int ny = static_cast<int>(std::ceil(extent.y() / cell)) + 1;
+  const NarrowCells counts =
+      narrow_cells(points, triangles, width, lo - Vec2::Constant(width), cell, nx, ny);
+  return counts.inside == 0 ? 0.0 : double(counts.narrow) / double(counts.inside);
+}
+
+double narrow_area_in_box(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                          double width, const Vec2& lo, const Vec2& hi,
+                          const PieceWidthOptions& options) {
+  check_flat_piece("narrow_area_in_box", points, triangles, width);
+  if (!lo.allFinite() || !hi.allFinite() || !(lo.x() <= hi.x()) || !(lo.y() <= hi.y()))
+    throw InvalidInputException("narrow_area_in_box: the box must be finite, lo <= hi");
+  // Whether a cell is narrow depends on the piece within one disc (`width`) of it; a margin of
+  // one more disc keeps the raster's own edge from reading as an outline near the box.
+  const double margin = 2.0 * width;
+  const Vec2 reach_lo = lo - Vec2::Constant(margin), reach_hi = hi + Vec2::Constant(margin);
+  std::vector<Triangle> near;
+  for (const Triangle& t : triangles) {
+    Vec2 tlo = points[t[0]], thi = points[t[0]];
+    for (int i : t) tlo = tlo.cwiseMin(points[i]), thi = thi.cwiseMax(points[i]);
+    if (thi.x() >= reach_lo.x() && tlo.x() <= reach_hi.x() && thi.y() >= reach_lo.y() &&
+        tlo.y() <= reach_hi.y())
+      near.push_back(t);
+  }
+  if (near.empty()) return 0.0;
+  // The raster covers the reach, anchored at it (the same box gives the same cells).
+  double cell = width * options.cell_fraction;
+  const Vec2 extent = reach_hi - reach_lo;
+  const double cells = (extent.x() / cell) * (extent.y() / cell);
+  if (cells > double(options.max_cells)) cell *= std::sqrt(cells / double(options.max_cells));
+  const int nx = static_cast<int>(std::ceil(extent.x() / cell)) + 1;
+  const int ny = static_cast<int>(std::ceil(extent.y() / cell)) + 1;
+  // Cell i's centre lies at reach_lo + (i + 0.5) cell.
+  auto first = [&](double from) { return static_cast<int>(std::ceil(from / cell - 0.5)); };
+  auto last = [&](double to) { return static_cast<int>(std::floor(to / cell - 0.5)); };
+  const std::array<int, 4> box = {first(lo.x() - reach_lo.x()), last(hi.x() - reach_lo.x()),
+                                  first(lo.y() - reach_lo.y()), last(hi.y() - reach_lo.y())};
+  const NarrowCells counts = narrow_cells(points, near, width, reach_lo, cell, nx, ny, box);
+  return double(counts.narrow) * cell * cell;
 }
 
 }  // namespace papercraft

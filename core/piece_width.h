@@ -28,6 +28,18 @@ struct PieceWidthOptions {
 double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
                             double width, const PieceWidthOptions& options = {});
 
+/// The area of the flat piece narrower than `width` (as narrow_area_fraction measures it, in
+/// squared units) whose raster cells have their centre in the box [lo, hi]. A cell's narrowness
+/// depends only on the piece within `width` of it, so only the triangles within two widths of
+/// the box are rastered, on cells anchored to the box: a piece that changes only within
+/// `width` of a region changes its narrow area by the difference of this over a box holding
+/// that margin, at a cost that grows with the box, not with the piece.
+/// \throws InvalidInputException as narrow_area_fraction, or if the box is not finite with
+///   lo <= hi.
+double narrow_area_in_box(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                          double width, const Vec2& lo, const Vec2& hi,
+                          const PieceWidthOptions& options = {});
+
 /// The same share for a piece of surface in 3D, with Euclidean distances: sample points
 /// (spaced at most `cell_fraction` times `width` apart over every triangle) farther than
 /// `width / 2` from the piece's boundary edges (edges of one triangle) are disc centres, and

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -386,6 +388,25 @@ FlatStrip sub_strip(const FlatStrip& strip, const std::vector<Triangle>& chosen)
   return part;
 }
 
+// The indices of the strips with a boundary edge on strip `index`'s rim (its neighbours), in
+// order.
+std::vector<int> strips_beside(const std::vector<FlatStrip>& strips, int index) {
+  const FlatStrip& strip = strips[index];
+  std::set<std::array<double, 6>> rim;
+  for (const BoundaryEdge& e : strip.boundary)
+    rim.insert(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1]));
+  std::vector<int> around;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+    if (s == index) continue;
+    for (const BoundaryEdge& e : strips[s].boundary)
+      if (rim.count(exact_key(strips[s].vertices3d[e.v0], strips[s].vertices3d[e.v1]))) {
+        around.push_back(s);
+        break;
+      }
+  }
+  return around;
+}
+
 // A strip no neighbour takes whole, taken apart into its triangles, each hinged to a
 // neighbour across one of its edges (a triangle whose neighbours are all its own siblings
 // waits until a sibling has been taken): where the union of the whole would overlap a
@@ -400,18 +421,7 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
   if (crumb.triangles.size() < 2 || crumb.triangles.size() > kMostTriangles) return false;
   // Only the crumb's neighbours (a boundary edge on its rim) can take its triangles: they
   // and the triangles are worked on apart from the other strips, then put back.
-  std::set<std::array<double, 6>> rim;
-  for (const BoundaryEdge& e : crumb.boundary)
-    rim.insert(exact_key(crumb.vertices3d[e.v0], crumb.vertices3d[e.v1]));
-  std::vector<int> around;  // indices into strips, in order
-  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
-    if (s == small) continue;
-    for (const BoundaryEdge& e : strips[s].boundary)
-      if (rim.count(exact_key(strips[s].vertices3d[e.v0], strips[s].vertices3d[e.v1]))) {
-        around.push_back(s);
-        break;
-      }
-  }
+  const std::vector<int> around = strips_beside(strips, small);
   if (around.empty()) return false;
   // trial: the neighbours at 0..n-1, then the triangles not yet taken. A triangle taken is
   // welded into the neighbour (the lower index keeps its place and id) and erased, so the
@@ -673,6 +683,290 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
   return true;
 }
 
+// How much of the seam a hinge leaves between the two strips `merged` joined is a slit: the
+// number of points it took from the second strip (at `first_added` and after) that lie closer
+// than `width` in the plane to a point of the first with the same 3D point. A band folded
+// out beside the edge it shares runs along it with a thin wedge between them, too narrow for
+// a tab over its length; one that leaves the edge at an angle opens at once.
+int slit_points(const FlatStrip& merged, std::size_t first_added, double width) {
+  std::map<std::array<double, 3>, std::vector<int>> first;
+  for (std::size_t v = 0; v < first_added; ++v) {
+    const Vec3& p = merged.vertices3d[v];
+    first[{p.x(), p.y(), p.z()}].push_back(static_cast<int>(v));
+  }
+  int count = 0;
+  for (std::size_t v = first_added; v < merged.vertices2d.size(); ++v) {
+    const Vec3& p = merged.vertices3d[v];
+    auto it = first.find({p.x(), p.y(), p.z()});
+    if (it == first.end()) continue;
+    for (int u : it->second)
+      if ((merged.vertices2d[u] - merged.vertices2d[v]).norm() < width) {
+        ++count;
+        break;
+      }
+  }
+  return count;
+}
+
+// The share of `joined` (`before` with triangles appended, `before`'s in place: a union keeps
+// the first strip's frame) narrower than `min_width`, `before`'s being `share_before`. The
+// union differs from `before` only within min_width of what it took, so its narrow area is
+// measured there alone; that mixes two rasters, which cut the outline differently, so where
+// the result lies within 0.05 of one of `limits` (what the caller compares it with) the whole
+// union is measured instead.
+double joined_share(const FlatStrip& before, double share_before, const FlatStrip& joined,
+                    double min_width, std::initializer_list<double> limits) {
+  Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (std::size_t t = before.triangles.size(); t < joined.triangles.size(); ++t)
+    for (int v : joined.triangles[t])
+      lo = lo.cwiseMin(joined.vertices2d[v]), hi = hi.cwiseMax(joined.vertices2d[v]);
+  if (!(lo.x() <= hi.x())) return share_before;  // nothing taken
+  lo -= Vec2::Constant(min_width), hi += Vec2::Constant(min_width);
+  const double narrow_area =
+      share_before * flat_area(before) -
+      narrow_area_in_box(before.vertices2d, before.triangles, min_width, lo, hi) +
+      narrow_area_in_box(joined.vertices2d, joined.triangles, min_width, lo, hi);
+  const double share = std::clamp(narrow_area / flat_area(joined), 0.0, 1.0);
+  for (double limit : limits)
+    if (std::abs(share - limit) < 0.05)
+      return narrow_area_fraction(joined.vertices2d, joined.triangles, min_width);
+  return share;
+}
+
+// A band no hinge takes whole (its neighbours' edges bend where it is straight in the plane:
+// any hinge lays the rest of it over the neighbour), cut in two across one of its inner edges
+// and each half hinged onto a neighbour, the halves folding onto different edges. Cuts are
+// tried the most even first (at most kMostCuts, evenly spread over the rest), each half's
+// shared edges the longest first (at most kMostHinges with each neighbour): a half is kept on a
+// hinge that gives a union `keeps_wide` accepts (given the neighbour's index in `strips` and the
+// union, which may hold the other half too), of those the one leaving the least slit. Kept only
+// when both halves find a place; then the band is erased from `strips` and the neighbours that took
+// a half are replaced by the unions, their indices (after the erase) going to `changed`. Otherwise
+// `strips` is left as it was and false returned.
+bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
+                  const MergeOptions& options,
+                  const std::function<bool(int, const FlatStrip&)>& keeps_wide,
+                  std::vector<int>& changed) {
+  constexpr int kMostCuts = 48;
+  constexpr int kMostHinges = 12;
+  const FlatStrip& strip = strips[band];
+  const int count = static_cast<int>(strip.triangles.size());
+  if (count < 2) return false;
+  // The band's neighbours (a boundary edge on its rim), worked on apart from the other strips:
+  // trial holds them at 0..n-1, then a half of the band at n.
+  const std::vector<int> around = strips_beside(strips, band);
+  if (around.empty()) return false;
+  const int n = static_cast<int>(around.size());
+
+  // Each edge the band shares with a neighbour, as a hinge of the whole band: its triangle,
+  // and the band's triangles that its motion lays over that neighbour. A half folds over it
+  // only when it holds the triangle and none of those (the neighbour alone; a half folding
+  // onto a neighbour that took the other half is checked in full).
+  struct Fold {
+    int triangle = -1;
+    std::vector<int> over;
+  };
+  std::map<std::pair<int, std::array<double, 6>>, Fold> folds;  // (neighbour, 3D edge)
+  {
+    std::vector<FlatStrip> whole;
+    for (int s : around) whole.push_back(strips[s]);
+    whole.push_back(strip);
+    const std::vector<PairCandidate> pairs = shared_boundaries(whole);
+    const auto hinges = hinges_of(
+        pairs, whole, [&](const PairCandidate& pair) { return pair.x < n && pair.y == n; });
+    const double band_edge = mean_edge_length(strip);
+    std::map<int, TriangleGrid2> grids;
+    for (const Hinge& hinge : hinges) {
+      const int i = pairs[hinge.pair].x;
+      const FlatStrip& neighbour = whole[i];
+      const double mean_edge = 0.5 * (mean_edge_length(neighbour) + band_edge);
+      auto grid = grids.find(i);
+      if (grid == grids.end()) {
+        grid = grids.emplace(i, TriangleGrid2(mean_edge > 0.0 ? mean_edge : 1.0)).first;
+        for (const Triangle& t : neighbour.triangles)
+          grid->second.insert(
+              {neighbour.vertices2d[t[0]], neighbour.vertices2d[t[1]], neighbour.vertices2d[t[2]]});
+      }
+      const Chain& edge = hinge.edge;
+      const RigidMotion motion =
+          fit({strip.vertices2d[edge.y[0]], strip.vertices2d[edge.y[1]]},
+              {neighbour.vertices2d[edge.x[0]], neighbour.vertices2d[edge.x[1]]});
+      // Looser than try_merge's bound, which it only screens for.
+      const double tolerance = 2.0 * options.overlap_tolerance * mean_edge +
+                               8.0 * chain_residual(neighbour, strip, edge, motion);
+      Fold fold;
+      for (int t = 0; t < count; ++t) {
+        const Triangle& tri = strip.triangles[t];
+        int on_edge = 0;
+        for (int v : tri) on_edge += v == edge.y[0] || v == edge.y[1];
+        if (on_edge == 2) fold.triangle = t;
+        if (grid->second.overlaps(
+                {motion(strip.vertices2d[tri[0]]), motion(strip.vertices2d[tri[1]]),
+                 motion(strip.vertices2d[tri[2]])},
+                tolerance))
+          fold.over.push_back(t);
+      }
+      const std::array<double, 6> key =
+          exact_key(strip.vertices3d[edge.y[0]], strip.vertices3d[edge.y[1]]);
+      if (fold.triangle >= 0) folds.emplace(std::make_pair(i, key), std::move(fold));
+    }
+  }
+  if (folds.empty()) return false;
+
+  // The band's inner edges, as the two triangles they join.
+  std::map<std::pair<int, int>, std::vector<int>> by_edge;
+  for (int t = 0; t < count; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = strip.triangles[t][k], b = strip.triangles[t][(k + 1) % 3];
+      by_edge[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  std::vector<std::pair<int, int>> inner;
+  for (const auto& [edge, ts] : by_edge)
+    if (ts.size() == 2) inner.emplace_back(ts[0], ts[1]);
+  // Which side of a cut each triangle lies on (true: the first triangle's), or nothing where
+  // the band stays one piece (around an inner vertex) or falls into more than two.
+  auto sides = [&](std::size_t cut, std::vector<bool>& first) {
+    UnionFind parts(count);
+    for (std::size_t e = 0; e < inner.size(); ++e)
+      if (e != cut) parts.unite(inner[e].first, inner[e].second);
+    const std::size_t root = parts.find(inner[cut].first);
+    const std::size_t other = parts.find(inner[cut].second);
+    if (other == root) return false;
+    first.assign(count, false);
+    for (int t = 0; t < count; ++t) {
+      const std::size_t r = parts.find(t);
+      if (r != root && r != other) return false;
+      first[t] = r == root;
+    }
+    return true;
+  };
+  // Whether a half may fold over (neighbour, edge): it holds the hinge's triangle and none of
+  // the band's triangles the hinge lays over the neighbour.
+  auto may_fold = [&](const std::vector<bool>& first, bool side, int neighbour,
+                      const std::array<double, 6>& key) {
+    auto it = folds.find({neighbour, key});
+    if (it == folds.end() || first[it->second.triangle] != side) return false;
+    for (int t : it->second.over)
+      if (first[t] == side) return false;
+    return true;
+  };
+  auto any_fold = [&](const std::vector<bool>& first, bool side) {
+    for (const auto& [where, fold] : folds)
+      if (may_fold(first, side, where.first, where.second)) return true;
+    return false;
+  };
+  // Cuts by how evenly they share the band, the most even first; only those where each half
+  // has a hinge that may take it.
+  std::vector<std::pair<int, std::size_t>> order;  // (imbalance, cut)
+  for (std::size_t e = 0; e < inner.size(); ++e) {
+    std::vector<bool> first;
+    if (!sides(e, first) || !any_fold(first, true) || !any_fold(first, false)) continue;
+    const int in_first = static_cast<int>(std::count(first.begin(), first.end(), true));
+    order.emplace_back(std::abs(2 * in_first - count), e);
+  }
+  std::stable_sort(order.begin(), order.end());
+  if (static_cast<int>(order.size()) > kMostCuts) {
+    std::vector<std::pair<int, std::size_t>> spread;
+    for (int i = 0; i < kMostCuts; ++i) spread.push_back(order[i * order.size() / kMostCuts]);
+    order = std::move(spread);
+  }
+
+  // Hinges the half at trial[n] (the `side` of `first`) onto a neighbour in `trial`: the union
+  // replaces the neighbour and the half is erased. Returns the slit left, or -1 where no hinge
+  // takes it.
+  auto place = [&](std::vector<FlatStrip>& trial, std::vector<bool>& took,
+                   const std::vector<bool>& first, bool side, bool check_wide) {
+    const FlatStrip& half = trial[n];
+    const std::vector<PairCandidate> pairs = shared_boundaries(trial);
+    const auto hinges = hinges_of(
+        pairs, trial, [&](const PairCandidate& pair) { return pair.x < n && pair.y == n; });
+    // The unions that place it, the least slit first; with `check_wide`, the first of those
+    // keeps_wide accepts.
+    std::vector<std::pair<int, int>> placed;        // (slit, index into unions)
+    std::vector<std::pair<int, FlatStrip>> unions;  // (neighbour in trial, union)
+    std::vector<int> tried(n, 0);  // per neighbour: the floor's edges must not use up the
+                                   // tries before the ceiling's
+    for (const Hinge& hinge : hinges) {
+      const PairCandidate& pair = pairs[hinge.pair];
+      if (tried[pair.x] == kMostHinges) continue;
+      const std::array<double, 6> key =
+          exact_key(half.vertices3d[hinge.edge.y[0]], half.vertices3d[hinge.edge.y[1]]);
+      if (!may_fold(first, side, pair.x, key)) continue;
+      ++tried[pair.x];
+      FlatStrip merged;
+      if (!try_merge(trial[pair.x], half, {hinge.edge}, options, merged)) continue;
+      const int slit = slit_points(merged, trial[pair.x].vertices2d.size(), min_width);
+      placed.emplace_back(slit, static_cast<int>(unions.size()));
+      unions.emplace_back(pair.x, std::move(merged));
+    }
+    std::stable_sort(placed.begin(), placed.end());
+    int best_x = -1, best_slit = 0;
+    FlatStrip best;
+    for (const auto& [slit, u] : placed) {
+      if (check_wide && !keeps_wide(around[unions[u].first], unions[u].second)) continue;
+      best_x = unions[u].first, best_slit = slit, best = std::move(unions[u].second);
+      break;
+    }
+    if (best_x < 0) return -1;
+    trial[best_x] = std::move(best);
+    took[best_x] = true;
+    trial.erase(trial.begin() + n);
+    return best_slit;
+  };
+  auto half_of = [&](const std::vector<bool>& first, bool side) {
+    std::vector<Triangle> chosen;
+    for (int t = 0; t < count; ++t)
+      if (first[t] == side) chosen.push_back(strip.triangles[t]);
+    return sub_strip(strip, chosen);
+  };
+  std::vector<FlatStrip> kept;
+  std::vector<bool> kept_took;
+  int kept_slit = -1;
+  // Both halves placed at `cut` (the slit they leave), or -1. Measuring width is what costs:
+  // it is checked only where both halves find a place without it.
+  auto split_at = [&](std::size_t cut, bool check_wide, std::vector<FlatStrip>& trial,
+                      std::vector<bool>& took) {
+    std::vector<bool> first;
+    sides(cut, first);
+    trial.clear();
+    for (int s : around) trial.push_back(strips[s]);
+    took.assign(n, false);  // the neighbours that took a half
+    trial.push_back(half_of(first, true));
+    const int slit_first = place(trial, took, first, true, check_wide);
+    if (slit_first < 0) return -1;
+    trial.push_back(half_of(first, false));
+    const int slit_second = place(trial, took, first, false, check_wide);
+    return slit_second < 0 ? -1 : slit_first + slit_second;
+  };
+  // Placing costs little; measuring width is what costs. So the width is checked only where
+  // both halves find a place without it and might leave less slit than the split kept (the
+  // check only takes choices away), at most kMostChecks times before one passes and
+  // kMostBetter times after.
+  constexpr int kMostChecks = 32;
+  constexpr int kMostBetter = 8;
+  int checks = 0, better = 0;
+  for (const auto& [imbalance, cut] : order) {
+    std::vector<FlatStrip> trial;
+    std::vector<bool> took;
+    const int unchecked = split_at(cut, false, trial, took);
+    if (unchecked < 0 || (kept_slit >= 0 && unchecked >= kept_slit)) continue;
+    if (kept_slit < 0 ? ++checks > kMostChecks : ++better > kMostBetter) break;
+    const int slit = split_at(cut, true, trial, took);
+    if (slit < 0 || (kept_slit >= 0 && slit >= kept_slit)) continue;
+    kept = std::move(trial), kept_took = std::move(took), kept_slit = slit;
+    if (kept_slit == 0) break;
+  }
+  if (kept_slit < 0) return false;
+  changed.clear();
+  for (int i = 0; i < n; ++i) {
+    if (!kept_took[i]) continue;
+    strips[around[i]] = std::move(kept[i]);
+    changed.push_back(around[i] > band ? around[i] - 1 : around[i]);
+  }
+  strips.erase(strips.begin() + band);
+  return true;
+}
+
 }  // namespace
 
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
@@ -708,6 +1002,23 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
       break;
     }
     if (!joined) joined = absorb_by_triangles(strips, small, options);
+    if (!joined && min_width > 0.0) {
+      // Cut in two, each half hinged onto a neighbour that gets no narrower than it was (or
+      // than narrow_join_share).
+      std::map<int, double> share;  // by index into strips, as measured
+      const auto keeps_wide = [&](int neighbour, const FlatStrip& joined_strip) {
+        auto it = share.find(neighbour);
+        if (it == share.end())
+          it = share
+                   .emplace(neighbour, narrow_area_fraction(strips[neighbour].vertices2d,
+                                                            strips[neighbour].triangles, min_width))
+                   .first;
+        const double most = std::max(it->second, options.narrow_join_share);
+        return joined_share(strips[neighbour], it->second, joined_strip, min_width, {most}) <= most;
+      };
+      std::vector<int> changed;
+      joined = hinge_in_two(strips, small, min_width, options, keeps_wide, changed);
+    }
     if (!joined)
       joined = grow_from_neighbours(strips, small, GrowUntil::kMinArea, min_area, min_width,
                                     options.narrow_join_share, options);
@@ -717,35 +1028,6 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
   label_seams(strips);
   return strips;
 }
-
-namespace {
-
-// How much of the seam a hinge leaves between the two strips `merged` joined is a slit: the
-// number of points it took from the second strip (at `first_added` and after) that lie closer
-// than `width` in the plane to a point of the first with the same 3D point. A band folded
-// out beside the edge it shares runs along it with a thin wedge between them, too narrow for
-// a tab over its length; one that leaves the edge at an angle opens at once.
-int slit_points(const FlatStrip& merged, std::size_t first_added, double width) {
-  std::map<std::array<double, 3>, std::vector<int>> first;
-  for (std::size_t v = 0; v < first_added; ++v) {
-    const Vec3& p = merged.vertices3d[v];
-    first[{p.x(), p.y(), p.z()}].push_back(static_cast<int>(v));
-  }
-  int count = 0;
-  for (std::size_t v = first_added; v < merged.vertices2d.size(); ++v) {
-    const Vec3& p = merged.vertices3d[v];
-    auto it = first.find({p.x(), p.y(), p.z()});
-    if (it == first.end()) continue;
-    for (int u : it->second)
-      if ((merged.vertices2d[u] - merged.vertices2d[v]).norm() < width) {
-        ++count;
-        break;
-      }
-  }
-  return count;
-}
-
-}  // namespace
 
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options,
@@ -759,6 +1041,21 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
   std::vector<double> share(strips.size());
   for (std::size_t s = 0; s < strips.size(); ++s) share[s] = share_of(strips[s]);
   std::set<int> given_up;  // ids of narrow strips no neighbour takes
+  // A strip given up beside a union is tried again: the union is less narrow than the
+  // neighbour it folded onto was, or has new edges for a hinge.
+  const auto retry_beside = [&](const FlatStrip& joined) {
+    std::set<std::array<double, 6>> rim;
+    for (const BoundaryEdge& e : joined.boundary)
+      rim.insert(exact_key(joined.vertices3d[e.v0], joined.vertices3d[e.v1]));
+    for (const FlatStrip& strip : strips) {
+      if (!given_up.count(strip.id)) continue;
+      for (const BoundaryEdge& e : strip.boundary)
+        if (rim.count(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1]))) {
+          given_up.erase(strip.id);
+          break;
+        }
+    }
+  };
   while (true) {
     // The narrowest strip still to place.
     int narrow = -1;
@@ -797,7 +1094,23 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       if (slit == 0) break;
     }
     if (best_hinge < 0) {
-      given_up.insert(strips[narrow].id);
+      // No hinge takes it whole: cut in two, each half hinged onto a neighbour, where the
+      // union is less narrow than the strip and no narrower than the neighbour was (or than
+      // the bound).
+      std::vector<int> changed;
+      const auto keeps_wide = [&](int neighbour, const FlatStrip& joined) {
+        const double most = std::max(share[neighbour], narrow_share);
+        const double union_share = joined_share(strips[neighbour], share[neighbour], joined,
+                                                min_width, {share[narrow], most});
+        return union_share < share[narrow] && union_share <= most;
+      };
+      if (hinge_in_two(strips, narrow, min_width, options, keeps_wide, changed)) {
+        share.erase(share.begin() + narrow);
+        for (int s : changed) share[s] = share_of(strips[s]);
+        for (int s : changed) retry_beside(strips[s]);
+      } else {
+        given_up.insert(strips[narrow].id);
+      }
       continue;
     }
     const PairCandidate& pair = pairs[hinges[best_hinge].pair];
@@ -805,20 +1118,7 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     share[pair.x] = best_share;
     strips.erase(strips.begin() + pair.y);
     share.erase(share.begin() + pair.y);
-    // A strip given up beside the union is tried again: the union is less narrow than the
-    // neighbour it folded onto was, or has new edges for a hinge.
-    const FlatStrip& joined = strips[pair.x];  // x < y: the union kept x's place
-    std::set<std::array<double, 6>> rim;
-    for (const BoundaryEdge& e : joined.boundary)
-      rim.insert(exact_key(joined.vertices3d[e.v0], joined.vertices3d[e.v1]));
-    for (const FlatStrip& strip : strips) {
-      if (!given_up.count(strip.id)) continue;
-      for (const BoundaryEdge& e : strip.boundary)
-        if (rim.count(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1]))) {
-          given_up.erase(strip.id);
-          break;
-        }
-    }
+    retry_beside(strips[pair.x]);  // x < y: the union kept x's place
   }
   // A strip still narrow grows instead, as a crumb does, until it is no longer narrow (a
   // neighbour it takes from keeps min_area and gets no narrower than it was or than the

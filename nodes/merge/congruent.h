@@ -61,19 +61,23 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// waits for one of them to be taken. That is kept only when every triangle finds a place and
 /// at most one edge between two of its triangles is opened (each one a new seam to glue,
 /// often tiny and in a notch without room for a tab). A small strip that cannot be taken
-/// apart either grows instead: it takes its neighbours' triangles that share an edge with it,
-/// one at a time (of those that find a place, the one leaving it most compact: the least
-/// squared perimeter per area in the plane), each folded out of it over the edges it shares, until
-/// it reaches `min_area`; a triangle takes with it what its neighbour held only through it (the end
-/// of a ruled strip beyond it), so the neighbour stays one piece. It is taken only where it lands
-/// on no other triangle of the strip, every edge shared welds (no slit) and the neighbour keeps at
-/// least `min_area`. It grows until it reaches `min_area` and neither it nor a neighbour it took
-/// from is narrower than `min_width` over more than options.narrow_join_share of its area (or
-/// than before; `min_width` 0: not checked): past `min_area` it goes on growing until that holds,
-/// giving up once 16 triangles in a row bring no such growth. Kept only within 64 triangles.
-/// The 3D surface is unchanged: only which piece prints a triangle moves, so the seam between
-/// them moves with it. The ids of small strips left go to `left` (when given); then label_seams
-/// runs on the result. \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+/// apart (more than 64 triangles, or more edges opened) is cut in two across one of its inner
+/// edges, each half hinged onto a neighbour (join_narrow_strips' cut, with no neighbour getting
+/// narrower than `min_width` over more than options.narrow_join_share of its area or than it
+/// was; `min_width` 0: not tried). One that cannot be cut either grows instead: it takes its
+/// neighbours' triangles that share an edge with it, one at a time (of those that find a place, the
+/// one leaving it most compact: the least squared perimeter per area in the plane), each folded out
+/// of it over the edges it shares, until it reaches `min_area`; a triangle takes with it what its
+/// neighbour held only through it (the end of a ruled strip beyond it), so the neighbour stays one
+/// piece. It is taken only where it lands on no other triangle of the strip, every edge shared
+/// welds (no slit) and the neighbour keeps at least `min_area`. It grows until it reaches
+/// `min_area` and neither it nor a neighbour it took from is narrower than `min_width` over more
+/// than options.narrow_join_share of its area (or than before; `min_width` 0: not checked): past
+/// `min_area` it goes on growing until that holds, giving up once 16 triangles in a row bring no
+/// such growth. Kept only within 64 triangles. The 3D surface is unchanged: only which piece prints
+/// a triangle moves, so the seam between them moves with it. The ids of small strips left go to
+/// `left` (when given); then label_seams runs on the result. \pre as merge_congruent. \throws
+/// InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options = {},
                                          std::vector<int>* left = nullptr, double min_width = 0.0);
@@ -87,15 +91,22 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// neighbour together (a band kept whole beside a wide neighbour, one seam fewer); of those,
 /// the hinge leaving the fewest shared points closer than `min_width` in the plane (a slit).
 /// The band then folds over the hinge and its other shared edges are seams of the union with
-/// itself. A strip no neighbour takes is passed over until a join makes a union beside it (new
-/// edges to fold over, a neighbour less narrow), then tried again; those left after that stay
-/// as they are. Each of those still narrow then grows as join_small_strips grows a crumb (its
-/// neighbours' triangles beside it, the one leaving it most compact first, each neighbour
-/// keeping at least `min_area` and getting no narrower than it was or than `narrow_share`),
-/// until it is narrow over at most `narrow_share`; within 64 triangles, and giving up once 16
-/// taken in a row leave it no less narrow, or it stays as it is. Then label_seams runs on the
-/// result.
-/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+/// itself. A strip no hinge takes whole (its neighbours' edges turn where it runs straight in
+/// the plane, so any hinge lays its far end over the neighbour) is cut in two across one of its
+/// inner edges, each half hinged onto a neighbour (often different ones: one half onto the
+/// floor, the other onto the ceiling): cuts the most even first (at most 48, and each half's
+/// 12 longest hinges onto each neighbour that the whole band's motion does not already lay
+/// over it),
+/// kept where each union is less narrow than the strip and no narrower than its neighbour was
+/// (or than `narrow_share`), the cut leaving the least slit. A strip neither takes is passed
+/// over until a join makes a union beside it (new edges to fold over, a neighbour less
+/// narrow), then tried again; those left after that stay as they are. Each of those still narrow
+/// then grows as join_small_strips grows a crumb (its neighbours' triangles beside it, the one
+/// leaving it most compact first, each neighbour keeping at least `min_area` and getting no
+/// narrower than it was or than `narrow_share`), until it is narrow over at most `narrow_share`;
+/// within 64 triangles, and giving up once 16 taken in a row leave it no less narrow, or it stays
+/// as it is. Then label_seams runs on the result. \pre as merge_congruent. \throws
+/// InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},
                                           int most_hinges = 256, double min_area = 0.0);

@@ -55,6 +55,73 @@ TEST(PieceWidth, OrientationAndOverlapDoNotMatter) {
   EXPECT_NEAR(narrow_area_fraction(points, triangles, 4.0), ccw, 1e-12);
 }
 
+// A 200 x 100 rectangle and, when `tab`, a band 40 long and 2 wide (narrow at 3) on its right
+// side, leaving it at 30 degrees: across the raster's rows, so that how the raster cuts its
+// outline evens out along it.
+const Vec2 kTabLength = 40.0 * Vec2(std::cos(M_PI / 6), std::sin(M_PI / 6));
+const double kTabBase = 2.0 / std::cos(M_PI / 6);
+
+void plate(bool tab, std::vector<Vec2>& points, std::vector<Triangle>& triangles) {
+  rectangle(200, 100, points, triangles);
+  if (!tab) return;
+  const Vec2 a(200, 50), b(200, 50 + kTabBase);
+  points.insert(points.end(), {a, a + kTabLength, b + kTabLength, b});
+  triangles.insert(triangles.end(), {{4, 5, 6}, {4, 6, 7}});
+}
+
+double area_of(const std::vector<Vec2>& p, const std::vector<Triangle>& triangles) {
+  double area = 0.0;
+  for (const Triangle& t : triangles)
+    area += 0.5 * std::abs((p[t[1]] - p[t[0]]).x() * (p[t[2]] - p[t[0]]).y() -
+                           (p[t[1]] - p[t[0]]).y() * (p[t[2]] - p[t[0]]).x());
+  return area;
+}
+
+TEST(PieceWidth, NarrowAreaInABoxOverThePieceIsItsNarrowArea) {
+  std::vector<Vec2> points;
+  std::vector<Triangle> triangles;
+  plate(true, points, triangles);
+  const double whole = narrow_area_fraction(points, triangles, 3.0) * area_of(points, triangles);
+  EXPECT_GT(whole, 80.0);  // the band, and the corners
+  EXPECT_NEAR(narrow_area_in_box(points, triangles, 3.0, {-1, -1}, {241, 101}), whole, 1.5);
+  // Nothing narrow in the middle of the plate, nothing at all away from it.
+  EXPECT_EQ(narrow_area_in_box(points, triangles, 3.0, {50, 20}, {150, 80}), 0.0);
+  EXPECT_EQ(narrow_area_in_box(points, triangles, 3.0, {300, 300}, {310, 310}), 0.0);
+}
+
+TEST(PieceWidth, NarrowAreaInABoxSeesThePieceAroundTheBox) {
+  // A 4 mm band is wide at 3; a box over its lower millimetre alone holds no disc of 3, but
+  // the discs that cover it lie partly outside the box.
+  std::vector<Vec2> points;
+  std::vector<Triangle> triangles;
+  rectangle(100, 4, points, triangles);
+  EXPECT_LT(narrow_area_in_box(points, triangles, 3.0, {10, 0}, {90, 1}), 1.0);
+  // A 2 mm band is narrow there: all of the box's 80 mm^2, to a row of cells.
+  rectangle(100, 2, points, triangles);
+  EXPECT_GT(narrow_area_in_box(points, triangles, 3.0, {10, 0}, {90, 1}), 70.0);
+}
+
+TEST(PieceWidth, NarrowAreaInABoxAroundAnEditIsTheChangeOfTheWhole) {
+  // The plate gets the band: its narrow area changes only within one width of the band, so the
+  // box there (the band +- 3) gives the change, though the plate is far larger than the box.
+  // The whole's own raster differs from the boxes' by how it cuts the outline: about 1 mm^2.
+  std::vector<Vec2> before_points, after_points;
+  std::vector<Triangle> before, after;
+  plate(false, before_points, before);
+  plate(true, after_points, after);
+  const double width = 3.0;
+  const Vec2 lo(200 - width, 50 - width),
+      hi = Vec2(200, 50 + kTabBase) + kTabLength + Vec2::Constant(width);
+  const double narrow_before =
+      narrow_area_fraction(before_points, before, width) * area_of(before_points, before);
+  const double narrow_after =
+      narrow_area_fraction(after_points, after, width) * area_of(after_points, after);
+  const double change = narrow_area_in_box(after_points, after, width, lo, hi) -
+                        narrow_area_in_box(before_points, before, width, lo, hi);
+  EXPECT_GT(change, 70.0);  // the band, 80 mm^2, less what it takes at the plate's side
+  EXPECT_NEAR(narrow_before + change, narrow_after, 1.5);
+}
+
 TEST(PieceWidth, BadInputThrows) {
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;
@@ -64,6 +131,11 @@ TEST(PieceWidth, BadInputThrows) {
   triangles.push_back({0, 1, 7});
   EXPECT_THROW(narrow_area_fraction(points, triangles, 1.0), InvalidInputException);
   EXPECT_EQ(narrow_area_fraction(points, {}, 1.0), 0.0);
+  EXPECT_THROW(narrow_area_in_box(points, triangles, 1.0, {0, 0}, {1, 1}), InvalidInputException);
+  triangles.pop_back();
+  EXPECT_THROW(narrow_area_in_box(points, triangles, 1.0, {1, 0}, {0, 1}), InvalidInputException);
+  EXPECT_THROW(narrow_area_in_box(points, triangles, 1.0, {0, 0}, {NAN, 1}), InvalidInputException);
+  EXPECT_THROW(narrow_area_in_box(points, triangles, 0.0, {0, 0}, {1, 1}), InvalidInputException);
 }
 
 }  // namespace

@@ -635,6 +635,92 @@ TEST(JoinNarrowStrips, FanAtASaddleNoHingeTakesGrowsWide) {
   for (const FlatStrip& strip : joined) EXPECT_LE(share(strip), 0.25) << strip.id;
 }
 
+// An L-shaped prism `h` high: a floor (z = 0) and a ceiling (z = h), each an 8 x 8 square less
+// a 4 x 4 notch at (4..8, 0..4), and its wall along the notch's two sides, from (8, 4) by
+// (4, 4) to (4, 0) in `steps` segments per side, unrolled straight (8 long). Each plate is a
+// fan from (0, 8) over its outline, the notch's sides split where the wall's points are; seen
+// from outside the prism the ceiling turns the other way, so it is laid out mirrored.
+struct LPrism {
+  FlatStrip floor, ceiling, wall;
+};
+
+LPrism l_prism(double h, int steps) {
+  std::vector<Vec3> bottom;  // the wall's foot, walked with the wall on its left
+  for (int k = 0; k <= steps; ++k) bottom.emplace_back(8.0 - 4.0 * k / steps, 4.0, 0.0);
+  for (int k = 1; k <= steps; ++k) bottom.emplace_back(4.0, 4.0 - 4.0 * k / steps, 0.0);
+  LPrism prism;
+  prism.wall = straight_wall(bottom, h);
+  prism.floor.id = 0, prism.ceiling.id = 2;
+  prism.floor.source_strip = 0, prism.ceiling.source_strip = 2;
+  std::vector<Vec3> outline = {{0, 8, 0}, {0, 0, 0}, {4, 0, 0}};
+  for (auto it = bottom.rbegin() + 1; it != bottom.rend(); ++it) outline.push_back(*it);
+  outline.emplace_back(8, 8, 0);
+  for (const Vec3& p : outline) {
+    prism.floor.vertices3d.push_back(p);
+    prism.floor.vertices2d.emplace_back(p.x(), p.y());
+    prism.ceiling.vertices3d.push_back(p + Vec3(0, 0, h));
+    prism.ceiling.vertices2d.emplace_back(p.x(), -p.y());
+  }
+  for (int k = 1; k + 1 < static_cast<int>(outline.size()); ++k) {
+    prism.floor.triangles.push_back({0, k, k + 1});
+    prism.ceiling.triangles.push_back({0, k + 1, k});
+  }
+  for (const FlatStrip* s : {&prism.floor, &prism.ceiling, &prism.wall}) {
+    expect_isometric(*s);
+    EXPECT_EQ(count_overlapping_pairs(*s), 0);
+  }
+  return prism;
+}
+
+// The prism 0.2 high with a wall of four triangles. Folded out of the floor or the ceiling
+// over any edge, the wall runs on past the notch's corner into that plate (the plate's sides
+// turn by 90 degrees where the wall is straight), so no hinge takes it. Cut at the corner, one
+// half folds out of the floor into its notch, the other out of the ceiling into its own: two
+// pieces, neither narrow.
+TEST(JoinNarrowStrips, BandNoHingeTakesWholeIsCutInTwoAndEachHalfFoldedOut) {
+  const double width = 0.5;
+  const LPrism prism = l_prism(0.2, 1);
+  auto share = [&](const FlatStrip& s) {
+    return narrow_area_fraction(s.vertices2d, s.triangles, width);
+  };
+  ASSERT_GT(share(prism.wall), 0.9);
+  const std::vector<FlatStrip> strips = merge_congruent({prism.floor, prism.wall, prism.ceiling});
+  ASSERT_EQ(strips.size(), 3u);
+
+  const auto joined = join_narrow_strips(strips, width, 0.25);
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), 12u);
+  expect_valid(joined);
+  for (const FlatStrip& strip : joined) {
+    EXPECT_NE(strip.id, prism.wall.id);
+    EXPECT_EQ(strip.triangles.size(), 6u) << strip.id;  // its plate and two of the wall's
+    EXPECT_LE(share(strip), 0.25) << strip.id;
+  }
+}
+
+// The same prism with its wall in 160 triangles (40 along each side of the notch), and a
+// min_area above the wall's: a crumb no hinge takes whole, too many triangles to take apart one
+// by one, is cut in two, each half folded out of a plate, rather than grown.
+TEST(JoinSmallStrips, CrumbNoHingeTakesWholeIsCutInTwoAndEachHalfFoldedOut) {
+  const double width = 0.5, min_area = 2.0;  // the wall: 8 x 0.2
+  const LPrism prism = l_prism(0.2, 40);
+  ASSERT_EQ(prism.wall.triangles.size(), 160u);
+  ASSERT_LT(area_of(prism.wall), min_area);
+  const std::vector<FlatStrip> strips = merge_congruent({prism.floor, prism.wall, prism.ceiling});
+  ASSERT_EQ(strips.size(), 3u);
+
+  std::vector<int> left;
+  const auto joined = join_small_strips(strips, min_area, {}, &left, width);
+  EXPECT_TRUE(left.empty());
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), triangle_count(strips));
+  expect_valid(joined);
+  for (const FlatStrip& strip : joined) {
+    EXPECT_NE(strip.id, prism.wall.id);
+    EXPECT_LE(narrow_area_fraction(strip.vertices2d, strip.triangles, width), 0.25) << strip.id;
+  }
+}
+
 // Two bands side by side: joining them would leave a piece as narrow as each, so both stay.
 TEST(JoinNarrowStrips, TwoBandsAreNotJoinedIntoOneAsNarrow) {
   const int n = 16;
