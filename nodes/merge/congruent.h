@@ -76,8 +76,10 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// `min_area` it goes on growing until that holds, giving up once 16 triangles in a row bring no
 /// such growth. Kept only within 64 triangles. The 3D surface is unchanged: only which piece prints
 /// a triangle moves, so the seam between them moves with it. The ids of small strips left go to
-/// `left` (when given); then label_seams runs on the result. \pre as merge_congruent. \throws
-/// InvalidInputException as merge_congruent.
+/// `left` (when given); then label_seams runs on the result.
+///
+/// \pre as merge_congruent.
+/// \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options = {},
                                          std::vector<int>* left = nullptr, double min_width = 0.0);
@@ -105,8 +107,10 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// leaving it most compact first, each neighbour keeping at least `min_area` and getting no
 /// narrower than it was or than `narrow_share`), until it is narrow over at most `narrow_share`;
 /// within 64 triangles, and giving up once 16 taken in a row leave it no less narrow, or it stays
-/// as it is. Then label_seams runs on the result. \pre as merge_congruent. \throws
-/// InvalidInputException as merge_congruent.
+/// as it is. Then label_seams runs on the result.
+///
+/// \pre as merge_congruent.
+/// \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double min_width,
                                           double narrow_share, const MergeOptions& options = {},
                                           int most_hinges = 256, double min_area = 0.0);

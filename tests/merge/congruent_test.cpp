@@ -367,7 +367,7 @@ const FlatStrip* find_id(const std::vector<FlatStrip>& strips, int id) {
 // elephant-with-holes: crumb 79 (7 triangles, 55 mm^2) beside strip 78. Its first growths
 // past min_area leave a piece narrower than min_width over more of its area than before (and
 // than a quarter); it grows on until one does not, instead of giving up there.
-TEST(JoinSmallStrips, CrumbWhoseFirstGrowthLeavesItsNeighbourNarrowerGrowsOn) {
+TEST(JoinSmallStrips, CrumbWhoseFirstGrowthLeavesAPieceNarrowerGrowsOn) {
   const MergeFixture fixture = read_fixture("elephant_with_holes_crumb_79.json");
   ASSERT_EQ(fixture.strips.size(), 2u);
   const FlatStrip* crumb = find_id(fixture.strips, 79);
