@@ -147,10 +147,11 @@ void check_flat_piece(const char* what, const std::vector<Vec2>& points,
 
 }  // namespace
 
-double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
-                            double width, const PieceWidthOptions& options) {
-  check_flat_piece("narrow_area_fraction", points, triangles, width);
-  if (triangles.empty()) return 0.0;
+NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                           double width, const PieceWidthOptions& options) {
+  check_flat_piece("narrow_raster", points, triangles, width);
+  NarrowRaster raster;
+  if (triangles.empty()) return raster;
   Vec2 lo = Vec2::Constant(kFar), hi = Vec2::Constant(-kFar);
   for (const Triangle& t : triangles)
     for (int i : t) lo = lo.cwiseMin(points[i]), hi = hi.cwiseMax(points[i]);
@@ -161,19 +162,33 @@ double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<T
   if (cells > double(options.max_cells)) cell *= std::sqrt(cells / double(options.max_cells));
   const int nx = static_cast<int>(std::ceil(extent.x() / cell)) + 1;
   const int ny = static_cast<int>(std::ceil(extent.y() / cell)) + 1;
-  const NarrowCells counts =
-      narrow_cells(points, triangles, width, lo - Vec2::Constant(width), cell, nx, ny);
-  return counts.inside == 0 ? 0.0 : double(counts.narrow) / double(counts.inside);
+  raster.origin = lo - Vec2::Constant(width);
+  raster.cell = cell;
+  const NarrowCells counts = narrow_cells(points, triangles, width, raster.origin, cell, nx, ny);
+  raster.inside = counts.inside;
+  raster.narrow = counts.narrow;
+  return raster;
 }
 
-double narrow_area_in_box(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
-                          double width, const Vec2& lo, const Vec2& hi,
-                          const PieceWidthOptions& options) {
-  check_flat_piece("narrow_area_in_box", points, triangles, width);
+double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                            double width, const PieceWidthOptions& options) {
+  return narrow_raster(points, triangles, width, options).fraction();
+}
+
+NarrowRaster narrow_raster_in_box(const std::vector<Vec2>& points,
+                                  const std::vector<Triangle>& triangles, double width,
+                                  const Vec2& lo, const Vec2& hi, const NarrowRaster& grid) {
+  check_flat_piece("narrow_raster_in_box", points, triangles, width);
   if (!lo.allFinite() || !hi.allFinite() || !(lo.x() <= hi.x()) || !(lo.y() <= hi.y()))
-    throw InvalidInputException("narrow_area_in_box: the box must be finite, lo <= hi");
+    throw InvalidInputException("narrow_raster_in_box: the box must be finite, lo <= hi");
+  if (!(grid.cell > 0.0) || !std::isfinite(grid.cell) || !grid.origin.allFinite())
+    throw InvalidInputException(
+        "narrow_raster_in_box: the grid needs a finite origin and cell > 0");
+  NarrowRaster result;
+  result.origin = grid.origin;
+  result.cell = grid.cell;
   // Whether a cell is narrow depends on the piece within one disc (`width`) of it; a margin of
-  // one more disc keeps the raster's own edge from reading as an outline near the box.
+  // one more disc keeps the raster's own edge far from the box.
   const double margin = 2.0 * width;
   const Vec2 reach_lo = lo - Vec2::Constant(margin), reach_hi = hi + Vec2::Constant(margin);
   std::vector<Triangle> near;
@@ -184,21 +199,23 @@ double narrow_area_in_box(const std::vector<Vec2>& points, const std::vector<Tri
         tlo.y() <= reach_hi.y())
       near.push_back(t);
   }
-  if (near.empty()) return 0.0;
-  // The raster covers the reach, anchored at it (the same box gives the same cells).
-  double cell = width * options.cell_fraction;
-  const Vec2 extent = reach_hi - reach_lo;
-  const double cells = (extent.x() / cell) * (extent.y() / cell);
-  if (cells > double(options.max_cells)) cell *= std::sqrt(cells / double(options.max_cells));
-  const int nx = static_cast<int>(std::ceil(extent.x() / cell)) + 1;
-  const int ny = static_cast<int>(std::ceil(extent.y() / cell)) + 1;
-  // Cell i's centre lies at reach_lo + (i + 0.5) cell.
+  if (near.empty()) return result;
+  // The reach, in whole cells of the grid: cell k of it is the grid's cell first + k.
+  const double cell = grid.cell;
+  const long first_x = static_cast<long>(std::floor((reach_lo.x() - grid.origin.x()) / cell));
+  const long first_y = static_cast<long>(std::floor((reach_lo.y() - grid.origin.y()) / cell));
+  const int nx = static_cast<int>(std::ceil((reach_hi.x() - grid.origin.x()) / cell) - first_x) + 1;
+  const int ny = static_cast<int>(std::ceil((reach_hi.y() - grid.origin.y()) / cell) - first_y) + 1;
+  const Vec2 origin = grid.origin + cell * Vec2(double(first_x), double(first_y));
+  // Cell k's centre lies at origin + (k + 0.5) cell.
   auto first = [&](double from) { return static_cast<int>(std::ceil(from / cell - 0.5)); };
   auto last = [&](double to) { return static_cast<int>(std::floor(to / cell - 0.5)); };
-  const std::array<int, 4> box = {first(lo.x() - reach_lo.x()), last(hi.x() - reach_lo.x()),
-                                  first(lo.y() - reach_lo.y()), last(hi.y() - reach_lo.y())};
-  const NarrowCells counts = narrow_cells(points, near, width, reach_lo, cell, nx, ny, box);
-  return double(counts.narrow) * cell * cell;
+  const std::array<int, 4> box = {first(lo.x() - origin.x()), last(hi.x() - origin.x()),
+                                  first(lo.y() - origin.y()), last(hi.y() - origin.y())};
+  const NarrowCells counts = narrow_cells(points, near, width, origin, cell, nx, ny, box);
+  result.inside = counts.inside;
+  result.narrow = counts.narrow;
+  return result;
 }
 
 }  // namespace papercraft

@@ -28,17 +28,35 @@ struct PieceWidthOptions {
 double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
                             double width, const PieceWidthOptions& options = {});
 
-/// The area of the flat piece narrower than `width` (as narrow_area_fraction measures it, in
-/// squared units) whose raster cells have their centre in the box [lo, hi]. A cell's narrowness
-/// depends only on the piece within `width` of it, so only the triangles within two widths of
-/// the box are rastered, on cells anchored to the box: a piece that changes only within
-/// `width` of a region changes its narrow area by the difference of this over a box holding
-/// that margin, at a cost that grows with the box, not with the piece.
+/// The raster narrow_area_fraction measures a flat piece on: square cells of side `cell`, cell
+/// (i, j) centred at origin + (i + 1/2, j + 1/2) cell; `inside` counts the cells whose centre
+/// the piece covers, `narrow` those of them that no disc of the diameter inside covers.
+struct NarrowRaster {
+  Vec2 origin = Vec2::Zero();
+  double cell = 0.0;
+  long inside = 0;
+  long narrow = 0;
+  /// narrow / inside; 0 without inside cells.
+  double fraction() const { return inside > 0 ? double(narrow) / double(inside) : 0.0; }
+};
+
+/// The raster of narrow_area_fraction (which is its fraction()): over the piece's bounding box
+/// and one `width` around it. \throws InvalidInputException as narrow_area_fraction.
+NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                           double width, const PieceWidthOptions& options = {});
+
+/// The counts of the piece's cells on `grid`'s cells (its origin and cell) whose centre lies in
+/// the box [lo, hi]. A cell's narrowness depends only on the piece within `width` of it, so only
+/// the triangles within two widths of the box are rastered, and the counts are those the whole
+/// piece has on that grid there. So when a piece changes only within `width` inside a box's
+/// edges (triangles added in its middle), narrow_raster of it before, less this over the box
+/// before, plus this over the box after, is the changed piece's raster on the same grid, at a
+/// cost that grows with the box, not with the piece.
 /// \throws InvalidInputException as narrow_area_fraction, or if the box is not finite with
-///   lo <= hi.
-double narrow_area_in_box(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
-                          double width, const Vec2& lo, const Vec2& hi,
-                          const PieceWidthOptions& options = {});
+///   lo <= hi, or the grid's origin is not finite or its cell not positive.
+NarrowRaster narrow_raster_in_box(const std::vector<Vec2>& points,
+                                  const std::vector<Triangle>& triangles, double width,
+                                  const Vec2& lo, const Vec2& hi, const NarrowRaster& grid);
 
 /// The same share for a piece of surface in 3D, with Euclidean distances: sample points
 /// (spaced at most `cell_fraction` times `width` apart over every triangle) farther than

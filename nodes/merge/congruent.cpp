@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <initializer_list>
 #include <limits>
 #include <map>
 #include <set>
@@ -708,29 +707,36 @@ int slit_points(const FlatStrip& merged, std::size_t first_added, double width) 
   return count;
 }
 
-// The share of `joined` (`before` with triangles appended, `before`'s in place: a union keeps
-// the first strip's frame) narrower than `min_width`, `before`'s being `share_before`. The
-// union differs from `before` only within min_width of what it took, so its narrow area is
-// measured there alone; that mixes two rasters, which cut the outline differently, so where
-// the result lies within 0.05 of one of `limits` (what the caller compares it with) the whole
-// union is measured instead.
-double joined_share(const FlatStrip& before, double share_before, const FlatStrip& joined,
-                    double min_width, std::initializer_list<double> limits) {
+// How narrow strips[neighbour] was and `joined` (it with triangles appended, its own in
+// place: a union keeps the first strip's frame) is: the shares narrower than `min_width`,
+// both on the neighbour's raster (narrow_raster; `rasters` keeps them by index into `strips`,
+// once measured). The union differs from the neighbour only within min_width of what it took,
+// so only that box is rastered again: the share is exactly the one the whole union has on
+// that grid.
+std::pair<double, double> shares_before_and_joined(const std::vector<FlatStrip>& strips,
+                                                   int neighbour, const FlatStrip& joined,
+                                                   double min_width,
+                                                   std::map<int, NarrowRaster>& rasters) {
+  const FlatStrip& before = strips[neighbour];
+  auto it = rasters.find(neighbour);
+  if (it == rasters.end())
+    it = rasters.emplace(neighbour, narrow_raster(before.vertices2d, before.triangles, min_width))
+             .first;
+  const NarrowRaster& raster = it->second;
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (std::size_t t = before.triangles.size(); t < joined.triangles.size(); ++t)
     for (int v : joined.triangles[t])
       lo = lo.cwiseMin(joined.vertices2d[v]), hi = hi.cwiseMax(joined.vertices2d[v]);
-  if (!(lo.x() <= hi.x())) return share_before;  // nothing taken
+  if (!(lo.x() <= hi.x())) return {raster.fraction(), raster.fraction()};  // nothing taken
   lo -= Vec2::Constant(min_width), hi += Vec2::Constant(min_width);
-  const double narrow_area =
-      share_before * flat_area(before) -
-      narrow_area_in_box(before.vertices2d, before.triangles, min_width, lo, hi) +
-      narrow_area_in_box(joined.vertices2d, joined.triangles, min_width, lo, hi);
-  const double share = std::clamp(narrow_area / flat_area(joined), 0.0, 1.0);
-  for (double limit : limits)
-    if (std::abs(share - limit) < 0.05)
-      return narrow_area_fraction(joined.vertices2d, joined.triangles, min_width);
-  return share;
+  const NarrowRaster was =
+      narrow_raster_in_box(before.vertices2d, before.triangles, min_width, lo, hi, raster);
+  const NarrowRaster is =
+      narrow_raster_in_box(joined.vertices2d, joined.triangles, min_width, lo, hi, raster);
+  NarrowRaster result = raster;
+  result.inside += is.inside - was.inside;
+  result.narrow += is.narrow - was.narrow;
+  return {raster.fraction(), result.fraction()};
 }
 
 // A band no hinge takes whole (its neighbours' edges bend where it is straight in the plane:
@@ -1005,16 +1011,11 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     if (!joined && min_width > 0.0) {
       // Cut in two, each half hinged onto a neighbour that gets no narrower than it was (or
       // than narrow_join_share).
-      std::map<int, double> share;  // by index into strips, as measured
+      std::map<int, NarrowRaster> rasters;
       const auto keeps_wide = [&](int neighbour, const FlatStrip& joined_strip) {
-        auto it = share.find(neighbour);
-        if (it == share.end())
-          it = share
-                   .emplace(neighbour, narrow_area_fraction(strips[neighbour].vertices2d,
-                                                            strips[neighbour].triangles, min_width))
-                   .first;
-        const double most = std::max(it->second, options.narrow_join_share);
-        return joined_share(strips[neighbour], it->second, joined_strip, min_width, {most}) <= most;
+        const auto [was, is] =
+            shares_before_and_joined(strips, neighbour, joined_strip, min_width, rasters);
+        return is <= std::max(was, options.narrow_join_share);
       };
       std::vector<int> changed;
       joined = hinge_in_two(strips, small, min_width, options, keeps_wide, changed);
@@ -1098,11 +1099,11 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       // union is less narrow than the strip and no narrower than the neighbour was (or than
       // the bound).
       std::vector<int> changed;
+      std::map<int, NarrowRaster> rasters;
       const auto keeps_wide = [&](int neighbour, const FlatStrip& joined) {
-        const double most = std::max(share[neighbour], narrow_share);
-        const double union_share = joined_share(strips[neighbour], share[neighbour], joined,
-                                                min_width, {share[narrow], most});
-        return union_share < share[narrow] && union_share <= most;
+        const auto [was, is] =
+            shares_before_and_joined(strips, neighbour, joined, min_width, rasters);
+        return is < share[narrow] && is <= std::max(was, narrow_share);
       };
       if (hinge_in_two(strips, narrow, min_width, options, keeps_wide, changed)) {
         share.erase(share.begin() + narrow);

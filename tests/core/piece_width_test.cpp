@@ -77,34 +77,47 @@ double area_of(const std::vector<Vec2>& p, const std::vector<Triangle>& triangle
   return area;
 }
 
-TEST(PieceWidth, NarrowAreaInABoxOverThePieceIsItsNarrowArea) {
+TEST(PieceWidth, RasterInABoxOverThePieceIsItsRaster) {
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;
   plate(true, points, triangles);
-  const double whole = narrow_area_fraction(points, triangles, 3.0) * area_of(points, triangles);
-  EXPECT_GT(whole, 80.0);  // the band, and the corners
-  EXPECT_NEAR(narrow_area_in_box(points, triangles, 3.0, {-1, -1}, {241, 101}), whole, 1.5);
+  const NarrowRaster whole = narrow_raster(points, triangles, 3.0);
+  EXPECT_EQ(whole.fraction(), narrow_area_fraction(points, triangles, 3.0));
+  EXPECT_GT(whole.narrow * whole.cell * whole.cell, 70.0);  // the band, and the corners
+  const NarrowRaster all =
+      narrow_raster_in_box(points, triangles, 3.0, {-1, -1}, {241, 122}, whole);
+  EXPECT_EQ(all.inside, whole.inside);
+  EXPECT_EQ(all.narrow, whole.narrow);
   // Nothing narrow in the middle of the plate, nothing at all away from it.
-  EXPECT_EQ(narrow_area_in_box(points, triangles, 3.0, {50, 20}, {150, 80}), 0.0);
-  EXPECT_EQ(narrow_area_in_box(points, triangles, 3.0, {300, 300}, {310, 310}), 0.0);
+  const NarrowRaster middle =
+      narrow_raster_in_box(points, triangles, 3.0, {50, 20}, {150, 80}, whole);
+  EXPECT_GT(middle.inside, 0);
+  EXPECT_EQ(middle.narrow, 0);
+  EXPECT_EQ(narrow_raster_in_box(points, triangles, 3.0, {300, 300}, {310, 310}, whole).inside, 0);
 }
 
-TEST(PieceWidth, NarrowAreaInABoxSeesThePieceAroundTheBox) {
+TEST(PieceWidth, RasterInABoxSeesThePieceAroundTheBox) {
   // A 4 mm band is wide at 3; a box over its lower millimetre alone holds no disc of 3, but
-  // the discs that cover it lie partly outside the box.
+  // whether it is narrow depends on where the band's other edge lies, outside the box.
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;
   rectangle(100, 4, points, triangles);
-  EXPECT_LT(narrow_area_in_box(points, triangles, 3.0, {10, 0}, {90, 1}), 1.0);
+  NarrowRaster grid = narrow_raster(points, triangles, 3.0);
+  NarrowRaster box = narrow_raster_in_box(points, triangles, 3.0, {10, 0}, {90, 1}, grid);
+  EXPECT_GT(box.inside * grid.cell * grid.cell, 70.0);
+  EXPECT_EQ(box.narrow, 0);
   // A 2 mm band is narrow there: all of the box's 80 mm^2, to a row of cells.
   rectangle(100, 2, points, triangles);
-  EXPECT_GT(narrow_area_in_box(points, triangles, 3.0, {10, 0}, {90, 1}), 70.0);
+  grid = narrow_raster(points, triangles, 3.0);
+  box = narrow_raster_in_box(points, triangles, 3.0, {10, 0}, {90, 1}, grid);
+  EXPECT_GT(box.narrow * grid.cell * grid.cell, 70.0);
+  EXPECT_EQ(box.narrow, box.inside);
 }
 
-TEST(PieceWidth, NarrowAreaInABoxAroundAnEditIsTheChangeOfTheWhole) {
-  // The plate gets the band: its narrow area changes only within one width of the band, so the
-  // box there (the band +- 3) gives the change, though the plate is far larger than the box.
-  // The whole's own raster differs from the boxes' by how it cuts the outline: about 1 mm^2.
+TEST(PieceWidth, RasterInABoxAroundAnEditGivesTheRasterOfTheWhole) {
+  // The plate gets the band: its raster changes only within one width of the band, so the box
+  // there (the band +- 3) turns the plate's raster into the plated band's on the same grid,
+  // cell for cell, though the plate is far larger than the box.
   std::vector<Vec2> before_points, after_points;
   std::vector<Triangle> before, after;
   plate(false, before_points, before);
@@ -112,14 +125,17 @@ TEST(PieceWidth, NarrowAreaInABoxAroundAnEditIsTheChangeOfTheWhole) {
   const double width = 3.0;
   const Vec2 lo(200 - width, 50 - width),
       hi = Vec2(200, 50 + kTabBase) + kTabLength + Vec2::Constant(width);
-  const double narrow_before =
-      narrow_area_fraction(before_points, before, width) * area_of(before_points, before);
-  const double narrow_after =
-      narrow_area_fraction(after_points, after, width) * area_of(after_points, after);
-  const double change = narrow_area_in_box(after_points, after, width, lo, hi) -
-                        narrow_area_in_box(before_points, before, width, lo, hi);
-  EXPECT_GT(change, 70.0);  // the band, 80 mm^2, less what it takes at the plate's side
-  EXPECT_NEAR(narrow_before + change, narrow_after, 1.5);
+  const NarrowRaster grid = narrow_raster(before_points, before, width);
+  const NarrowRaster was = narrow_raster_in_box(before_points, before, width, lo, hi, grid);
+  const NarrowRaster is = narrow_raster_in_box(after_points, after, width, lo, hi, grid);
+  // The whole of the plated band on the plate's grid.
+  const NarrowRaster whole =
+      narrow_raster_in_box(after_points, after, width, {-10, -10}, {250, 130}, grid);
+  EXPECT_EQ(grid.inside - was.inside + is.inside, whole.inside);
+  EXPECT_EQ(grid.narrow - was.narrow + is.narrow, whole.narrow);
+  EXPECT_GT((is.narrow - was.narrow) * grid.cell * grid.cell, 70.0);  // the band, 80 mm^2
+  // ... and, on its own grid, the same share to how the rasters cut the outline.
+  EXPECT_NEAR(whole.fraction(), narrow_area_fraction(after_points, after, width), 1e-4);
 }
 
 TEST(PieceWidth, BadInputThrows) {
@@ -131,11 +147,18 @@ TEST(PieceWidth, BadInputThrows) {
   triangles.push_back({0, 1, 7});
   EXPECT_THROW(narrow_area_fraction(points, triangles, 1.0), InvalidInputException);
   EXPECT_EQ(narrow_area_fraction(points, {}, 1.0), 0.0);
-  EXPECT_THROW(narrow_area_in_box(points, triangles, 1.0, {0, 0}, {1, 1}), InvalidInputException);
+  const NarrowRaster grid = narrow_raster(points, {{0, 1, 2}}, 1.0);
+  EXPECT_THROW(narrow_raster_in_box(points, triangles, 1.0, {0, 0}, {1, 1}, grid),
+               InvalidInputException);
   triangles.pop_back();
-  EXPECT_THROW(narrow_area_in_box(points, triangles, 1.0, {1, 0}, {0, 1}), InvalidInputException);
-  EXPECT_THROW(narrow_area_in_box(points, triangles, 1.0, {0, 0}, {NAN, 1}), InvalidInputException);
-  EXPECT_THROW(narrow_area_in_box(points, triangles, 0.0, {0, 0}, {1, 1}), InvalidInputException);
+  EXPECT_THROW(narrow_raster_in_box(points, triangles, 1.0, {1, 0}, {0, 1}, grid),
+               InvalidInputException);
+  EXPECT_THROW(narrow_raster_in_box(points, triangles, 1.0, {0, 0}, {NAN, 1}, grid),
+               InvalidInputException);
+  EXPECT_THROW(narrow_raster_in_box(points, triangles, 0.0, {0, 0}, {1, 1}, grid),
+               InvalidInputException);
+  EXPECT_THROW(narrow_raster_in_box(points, triangles, 1.0, {0, 0}, {1, 1}, NarrowRaster{}),
+               InvalidInputException);
 }
 
 }  // namespace
