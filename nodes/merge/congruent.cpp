@@ -755,9 +755,13 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   std::vector<int>& changed) {
   constexpr int kMostCuts = 48;
   constexpr int kMostHinges = 12;
+  // Finding the cuts costs the square of the triangles: a strip of thousands (a large piece
+  // narrow along much of its rim; ChineseDragon's 3,629 took 20 s a try, five times) is left
+  // to the growth.
+  constexpr int kMostTriangles = 2048;
   const FlatStrip& strip = strips[band];
   const int count = static_cast<int>(strip.triangles.size());
-  if (count < 2) return false;
+  if (count < 2 || count > kMostTriangles) return false;
   // The band's neighbours (a boundary edge on its rim), worked on apart from the other strips:
   // trial holds them at 0..n-1, then a half of the band at n.
   const std::vector<int> around = strips_beside(strips, band);

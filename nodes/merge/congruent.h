@@ -96,7 +96,8 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// itself. A strip no hinge takes whole (its neighbours' edges turn where it runs straight in
 /// the plane, so any hinge lays its far end over the neighbour) is cut in two across one of its
 /// inner edges, each half hinged onto a neighbour (often different ones: one half onto the
-/// floor, the other onto the ceiling): cuts the most even first (at most 48, and each half's
+/// floor, the other onto the ceiling; a strip of at most 2,048 triangles): cuts the most even
+/// first (at most 48, and each half's
 /// 12 longest hinges onto each neighbour that the whole band's motion does not already lay
 /// over it),
 /// kept where each union is less narrow than the strip and no narrower than its neighbour was
