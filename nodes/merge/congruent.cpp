@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "core/dual_cuts.h"
 #include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/overlap_2d.h"
@@ -755,9 +756,10 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   std::vector<int>& changed) {
   constexpr int kMostCuts = 48;
   constexpr int kMostHinges = 12;
-  // Finding the cuts costs the square of the triangles: a strip of thousands (a large piece
-  // narrow along much of its rim; ChineseDragon's 3,629 took 20 s a try, five times) is left
-  // to the growth.
+  // Checking a half's width rasters a box the size of the half: on a strip of thousands of
+  // triangles (a large piece narrow along much of its rim; ChineseDragon's 3,629) the checks
+  // took 84 s of its 88 s merge, for the same pieces as without them. Such a strip is left to
+  // the growth.
   constexpr int kMostTriangles = 2048;
   const FlatStrip& strip = strips[band];
   const int count = static_cast<int>(strip.triangles.size());
@@ -833,21 +835,15 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   std::vector<std::pair<int, int>> inner;
   for (const auto& [edge, ts] : by_edge)
     if (ts.size() == 2) inner.emplace_back(ts[0], ts[1]);
+  // A cut leaves exactly two halves where its edge is a bridge of the band's dual graph.
+  const DualCuts cuts(count, inner);
+  if (!cuts.connected()) return false;  // a band in pieces: every cut leaves more than two
   // Which side of a cut each triangle lies on (true: the first triangle's), or nothing where
-  // the band stays one piece (around an inner vertex) or falls into more than two.
+  // the band stays one piece (around an inner vertex).
   auto sides = [&](std::size_t cut, std::vector<bool>& first) {
-    UnionFind parts(count);
-    for (std::size_t e = 0; e < inner.size(); ++e)
-      if (e != cut) parts.unite(inner[e].first, inner[e].second);
-    const std::size_t root = parts.find(inner[cut].first);
-    const std::size_t other = parts.find(inner[cut].second);
-    if (other == root) return false;
+    if (!cuts.splits(cut)) return false;
     first.assign(count, false);
-    for (int t = 0; t < count; ++t) {
-      const std::size_t r = parts.find(t);
-      if (r != root && r != other) return false;
-      first[t] = r == root;
-    }
+    for (int t = 0; t < count; ++t) first[t] = cuts.on_first_side(cut, t);
     return true;
   };
   // Whether a half may fold over (neighbour, edge): it holds the hinge's triangle and none of
@@ -871,8 +867,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   for (std::size_t e = 0; e < inner.size(); ++e) {
     std::vector<bool> first;
     if (!sides(e, first) || !any_fold(first, true) || !any_fold(first, false)) continue;
-    const int in_first = static_cast<int>(std::count(first.begin(), first.end(), true));
-    order.emplace_back(std::abs(2 * in_first - count), e);
+    order.emplace_back(std::abs(2 * cuts.first_side_size(e) - count), e);
   }
   std::stable_sort(order.begin(), order.end());
   if (static_cast<int>(order.size()) > kMostCuts) {
