@@ -743,18 +743,20 @@ std::pair<double, double> shares_before_and_joined(const std::vector<FlatStrip>&
 // A band no hinge takes whole (its neighbours' edges bend where it is straight in the plane:
 // any hinge lays the rest of it over the neighbour), cut in two across one of its inner edges
 // and each half hinged onto a neighbour, the halves folding onto different edges. Cuts are
-// tried the most even first (at most kMostCuts, evenly spread over the rest), each half's
+// tried the most even first (at most 48, evenly spread over the rest), each half's
 // shared edges the longest first (at most kMostHinges with each neighbour): a half is kept on a
 // hinge that gives a union `keeps_wide` accepts (given the neighbour's index in `strips` and the
 // union, which may hold the other half too), of those the one leaving the least slit. Kept only
 // when both halves find a place; then the band is erased from `strips` and the neighbours that took
-// a half are replaced by the unions, their indices (after the erase) going to `changed`. Otherwise
-// `strips` is left as it was and false returned.
+// a half are replaced by the unions, their indices (after the erase) going to `changed`. Where no
+// cut places both halves and `in_three`, a half that finds a place is kept and the other half
+// cut in two again (a band whose neighbours turn more than once along it). Otherwise `strips`
+// is left as it was and false returned.
 bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   const MergeOptions& options,
                   const std::function<bool(int, const FlatStrip&)>& keeps_wide,
-                  std::vector<int>& changed) {
-  constexpr int kMostCuts = 48;
+                  std::vector<int>& changed, bool in_three = true) {
+  const int most_cuts = in_three ? 48 : 4;  // a half cut again: see "In three" below
   constexpr int kMostHinges = 12;
   // Checking a half's width rasters a box the size of the half: on a strip of thousands of
   // triangles (a large piece narrow along much of its rim; ChineseDragon's 3,629) the checks
@@ -863,18 +865,26 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   };
   // Cuts by how evenly they share the band, the most even first; only those where each half
   // has a hinge that may take it.
-  std::vector<std::pair<int, std::size_t>> order;  // (imbalance, cut)
+  // And, for a cut in three, those where one half has such a hinge (the other cut again).
+  std::vector<std::pair<int, std::size_t>> order, order_one;  // (imbalance, cut)
   for (std::size_t e = 0; e < inner.size(); ++e) {
     std::vector<bool> first;
-    if (!sides(e, first) || !any_fold(first, true) || !any_fold(first, false)) continue;
-    order.emplace_back(std::abs(2 * cuts.first_side_size(e) - count), e);
+    if (!sides(e, first)) continue;
+    const bool first_folds = any_fold(first, true), second_folds = any_fold(first, false);
+    const int imbalance = std::abs(2 * cuts.first_side_size(e) - count);
+    if (first_folds && second_folds) order.emplace_back(imbalance, e);
+    if (in_three && (first_folds || second_folds)) order_one.emplace_back(imbalance, e);
   }
-  std::stable_sort(order.begin(), order.end());
-  if (static_cast<int>(order.size()) > kMostCuts) {
+  const auto most_even = [&](std::vector<std::pair<int, std::size_t>>& cut_order) {
+    std::stable_sort(cut_order.begin(), cut_order.end());
+    if (static_cast<int>(cut_order.size()) <= most_cuts) return;
     std::vector<std::pair<int, std::size_t>> spread;
-    for (int i = 0; i < kMostCuts; ++i) spread.push_back(order[i * order.size() / kMostCuts]);
-    order = std::move(spread);
-  }
+    for (int i = 0; i < most_cuts; ++i)
+      spread.push_back(cut_order[i * cut_order.size() / most_cuts]);
+    cut_order = std::move(spread);
+  };
+  most_even(order);
+  most_even(order_one);
 
   // Hinges the half at trial[n] (the `side` of `first`) onto a neighbour in `trial`: the union
   // replaces the neighbour and the half is erased. Returns the slit left, or -1 where no hinge
@@ -960,6 +970,39 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
     if (slit < 0 || (kept_slit >= 0 && slit >= kept_slit)) continue;
     kept = std::move(trial), kept_took = std::move(took), kept_slit = slit;
     if (kept_slit == 0) break;
+  }
+  // In three, where no cut placed both halves (a band whose neighbours turn twice along it:
+  // each half of any cut turns with them somewhere): one half placed, width checked, and the
+  // other cut in two again (trying at most 4 cuts, as it is tried for several first halves).
+  // The cuts where one half may fold, the most even first; at most kMostThirds first halves
+  // placed, on bands of at most kMostInThree triangles (on 16 meshes every band it took had at
+  // most 125; larger ones failed at a cost).
+  constexpr int kMostThirds = 4;
+  constexpr int kMostInThree = 256;
+  int thirds = 0;
+  for (auto cut = order_one.begin();
+       in_three && count <= kMostInThree && kept_slit < 0 && cut != order_one.end(); ++cut) {
+    std::vector<bool> first;
+    sides(cut->second, first);
+    for (const bool side : {true, false}) {
+      std::vector<FlatStrip> trial(around.size());
+      for (int i = 0; i < n; ++i) trial[i] = strips[around[i]];
+      std::vector<bool> took(n, false);
+      trial.push_back(half_of(first, side));
+      if (place(trial, took, first, side, true) < 0) continue;
+      if (++thirds > kMostThirds) break;
+      trial.push_back(half_of(first, !side));
+      const auto keeps_wide_in_trial = [&](int i, const FlatStrip& joined) {
+        return keeps_wide(around[i], joined);
+      };
+      std::vector<int> took_rest;
+      if (!hinge_in_two(trial, n, min_width, options, keeps_wide_in_trial, took_rest, false))
+        continue;
+      for (int i : took_rest) took[i] = true;
+      kept = std::move(trial), kept_took = std::move(took), kept_slit = 0;
+      break;
+    }
+    if (thirds > kMostThirds) break;
   }
   if (kept_slit < 0) return false;
   changed.clear();

@@ -61,8 +61,8 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// waits for one of them to be taken. That is kept only when every triangle finds a place and
 /// at most one edge between two of its triangles is opened (each one a new seam to glue,
 /// often tiny and in a notch without room for a tab). A small strip that cannot be taken
-/// apart (more than 64 triangles, or more edges opened) is cut in two across one of its inner
-/// edges, each half hinged onto a neighbour (join_narrow_strips' cut, with no neighbour getting
+/// apart (more than 64 triangles, or more edges opened) is cut in two (or three) across its inner
+/// edges, each part hinged onto a neighbour (join_narrow_strips' cut, with no neighbour getting
 /// narrower than `min_width` over more than options.narrow_join_share of its area or than it
 /// was; `min_width` 0: not tried). One that cannot be cut either grows instead: it takes its
 /// neighbours' triangles that share an edge with it, one at a time (of those that find a place, the
@@ -101,7 +101,10 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// 12 longest hinges onto each neighbour that the whole band's motion does not already lay
 /// over it),
 /// kept where each union is less narrow than the strip and no narrower than its neighbour was
-/// (or than `narrow_share`), the cut leaving the least slit. A strip neither takes is passed
+/// (or than `narrow_share`), the cut leaving the least slit. Where no cut places both halves
+/// (its neighbours turn twice along it, so each half of any cut turns with them somewhere), a
+/// strip of at most 256 triangles is cut in three: one half placed and the other cut in two
+/// again, at most 4 first halves and 4 cuts of each second half tried. A strip none takes is passed
 /// over until a join makes a union beside it (new edges to fold over, a neighbour less
 /// narrow), then tried again; those left after that stay as they are. Each of those still narrow
 /// then grows as join_small_strips grows a crumb (its neighbours' triangles beside it, the one

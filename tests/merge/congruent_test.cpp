@@ -644,31 +644,41 @@ struct LPrism {
   FlatStrip floor, ceiling, wall;
 };
 
+// The floor (the plate at z = 0, counter-clockwise `triangles` over `points`) and the ceiling
+// (the same at z = h; seen from outside the prism it turns the other way, so it is laid out
+// mirrored) of a prism whose wall is already in place; checks all three.
+void add_plates(LPrism& prism, const std::vector<Vec3>& points,
+                const std::vector<Triangle>& triangles, double h) {
+  prism.floor.id = 0, prism.ceiling.id = 2;
+  prism.floor.source_strip = 0, prism.ceiling.source_strip = 2;
+  for (const Vec3& p : points) {
+    prism.floor.vertices3d.push_back(p);
+    prism.floor.vertices2d.emplace_back(p.x(), p.y());
+    prism.ceiling.vertices3d.push_back(p + Vec3(0, 0, h));
+    prism.ceiling.vertices2d.emplace_back(p.x(), -p.y());
+  }
+  for (const Triangle& t : triangles) {
+    prism.floor.triangles.push_back(t);
+    prism.ceiling.triangles.push_back({t[0], t[2], t[1]});
+  }
+  for (const FlatStrip* s : {&prism.floor, &prism.ceiling, &prism.wall}) {
+    expect_isometric(*s);
+    EXPECT_EQ(count_overlapping_pairs(*s), 0);
+  }
+}
+
 LPrism l_prism(double h, int steps) {
   std::vector<Vec3> bottom;  // the wall's foot, walked with the wall on its left
   for (int k = 0; k <= steps; ++k) bottom.emplace_back(8.0 - 4.0 * k / steps, 4.0, 0.0);
   for (int k = 1; k <= steps; ++k) bottom.emplace_back(4.0, 4.0 - 4.0 * k / steps, 0.0);
   LPrism prism;
   prism.wall = straight_wall(bottom, h);
-  prism.floor.id = 0, prism.ceiling.id = 2;
-  prism.floor.source_strip = 0, prism.ceiling.source_strip = 2;
   std::vector<Vec3> outline = {{0, 8, 0}, {0, 0, 0}, {4, 0, 0}};
   for (auto it = bottom.rbegin() + 1; it != bottom.rend(); ++it) outline.push_back(*it);
   outline.emplace_back(8, 8, 0);
-  for (const Vec3& p : outline) {
-    prism.floor.vertices3d.push_back(p);
-    prism.floor.vertices2d.emplace_back(p.x(), p.y());
-    prism.ceiling.vertices3d.push_back(p + Vec3(0, 0, h));
-    prism.ceiling.vertices2d.emplace_back(p.x(), -p.y());
-  }
-  for (int k = 1; k + 1 < static_cast<int>(outline.size()); ++k) {
-    prism.floor.triangles.push_back({0, k, k + 1});
-    prism.ceiling.triangles.push_back({0, k + 1, k});
-  }
-  for (const FlatStrip* s : {&prism.floor, &prism.ceiling, &prism.wall}) {
-    expect_isometric(*s);
-    EXPECT_EQ(count_overlapping_pairs(*s), 0);
-  }
+  std::vector<Triangle> fan;
+  for (int k = 1; k + 1 < static_cast<int>(outline.size()); ++k) fan.push_back({0, k, k + 1});
+  add_plates(prism, outline, fan, h);
   return prism;
 }
 
@@ -677,25 +687,63 @@ LPrism l_prism(double h, int steps) {
 // turn by 90 degrees where the wall is straight), so no hinge takes it. Cut at the corner, one
 // half folds out of the floor into its notch, the other out of the ceiling into its own: two
 // pieces, neither narrow.
-TEST(JoinNarrowStrips, BandNoHingeTakesWholeIsCutInTwoAndEachHalfFoldedOut) {
+// The prism's narrow wall (0.5 wide at most) joined by join_narrow_strips: checks that the
+// pieces left are valid, that none is the wall and none narrow, and returns them.
+std::vector<FlatStrip> wall_folded_out(const LPrism& prism) {
   const double width = 0.5;
-  const LPrism prism = l_prism(0.2, 1);
   auto share = [&](const FlatStrip& s) {
     return narrow_area_fraction(s.vertices2d, s.triangles, width);
   };
-  ASSERT_GT(share(prism.wall), 0.9);
+  EXPECT_GT(share(prism.wall), 0.9);
   const std::vector<FlatStrip> strips = merge_congruent({prism.floor, prism.wall, prism.ceiling});
-  ASSERT_EQ(strips.size(), 3u);
-
+  EXPECT_EQ(strips.size(), 3u);
   const auto joined = join_narrow_strips(strips, width, 0.25);
-  ASSERT_EQ(joined.size(), 2u);
-  EXPECT_EQ(triangle_count(joined), 12u);
   expect_valid(joined);
   for (const FlatStrip& strip : joined) {
     EXPECT_NE(strip.id, prism.wall.id);
-    EXPECT_EQ(strip.triangles.size(), 6u) << strip.id;  // its plate and two of the wall's
     EXPECT_LE(share(strip), 0.25) << strip.id;
   }
+  return joined;
+}
+
+TEST(JoinNarrowStrips, BandNoHingeTakesWholeIsCutInTwoAndEachHalfFoldedOut) {
+  const auto joined = wall_folded_out(l_prism(0.2, 1));
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), 12u);
+  for (const FlatStrip& strip : joined)
+    EXPECT_EQ(strip.triangles.size(), 6u) << strip.id;  // its plate and two of the wall's
+}
+
+// A U-shaped prism `h` high: floor and ceiling a 12 x 8 plate less a 4 x 4 notch at
+// (4..8, 0..4), and its wall along the notch's three sides, from (8, 0) by (8, 4) and (4, 4) to
+// (4, 0), unrolled straight (12 long). The plates are triangulated by hand (the U is not
+// star-shaped); the ceiling is laid out mirrored, as in l_prism.
+LPrism u_prism(double h) {
+  const std::vector<Vec3> bottom = {{8, 0, 0}, {8, 4, 0}, {4, 4, 0}, {4, 0, 0}};
+  LPrism prism;
+  prism.wall = straight_wall(bottom, h);
+  // A, B, C, D, E, F, G, H, and I, J on the plate's sides.
+  const std::vector<Vec3> points = {{0, 0, 0},  {4, 0, 0},  {4, 4, 0}, {8, 4, 0}, {8, 0, 0},
+                                    {12, 0, 0}, {12, 8, 0}, {0, 8, 0}, {0, 4, 0}, {12, 4, 0}};
+  add_plates(
+      prism, points,
+      {{0, 1, 2}, {0, 2, 8}, {7, 8, 2}, {7, 2, 3}, {7, 3, 9}, {7, 9, 6}, {3, 4, 5}, {3, 5, 9}}, h);
+  return prism;
+}
+
+// The U prism 0.2 high. Cut anywhere in two, the wall leaves a half that turns a corner of the
+// notch, and that half, folded out of either plate, runs on past the corner into the plate. Cut
+// at both corners, each side folds out of a plate into its notch, neighbouring sides onto
+// different plates (on one plate they would overlap in the notch's corner): two pieces, neither
+// the wall, neither narrow.
+TEST(JoinNarrowStrips, BandWhoseNeighboursTurnTwiceIsCutInThree) {
+  const auto joined = wall_folded_out(u_prism(0.2));
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), 22u);  // 8 on each plate and the wall's 6
+  // The floor takes the two sides (4 triangles), the ceiling the side between them (2).
+  std::vector<std::size_t> sizes = {joined[0].triangles.size(), joined[1].triangles.size()};
+  std::sort(sizes.begin(), sizes.end());
+  EXPECT_EQ(sizes, (std::vector<std::size_t>{10, 12}));
 }
 
 // The same prism with its wall in 160 triangles (40 along each side of the notch), and a
