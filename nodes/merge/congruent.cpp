@@ -757,6 +757,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   const std::function<bool(int, const FlatStrip&)>& keeps_wide,
                   std::vector<int>& changed, bool in_three = true) {
   const int most_cuts = in_three ? 48 : 4;  // a half cut again: see "In three" below
+  constexpr int kMostInThree = 256;         // see "In three" below
   constexpr int kMostHinges = 12;
   // Checking a half's width rasters a box the size of the half: on a strip of thousands of
   // triangles (a large piece narrow along much of its rim; ChineseDragon's 3,629) the checks
@@ -766,6 +767,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   const FlatStrip& strip = strips[band];
   const int count = static_cast<int>(strip.triangles.size());
   if (count < 2 || count > kMostTriangles) return false;
+  const bool may_cut_in_three = in_three && count <= kMostInThree;
   // The band's neighbours (a boundary edge on its rim), worked on apart from the other strips:
   // trial holds them at 0..n-1, then a half of the band at n.
   const std::vector<int> around = strips_beside(strips, band);
@@ -873,7 +875,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
     const bool first_folds = any_fold(first, true), second_folds = any_fold(first, false);
     const int imbalance = std::abs(2 * cuts.first_side_size(e) - count);
     if (first_folds && second_folds) order.emplace_back(imbalance, e);
-    if (in_three && (first_folds || second_folds)) order_one.emplace_back(imbalance, e);
+    if (may_cut_in_three && (first_folds || second_folds)) order_one.emplace_back(imbalance, e);
   }
   const auto most_even = [&](std::vector<std::pair<int, std::size_t>>& cut_order) {
     std::stable_sort(cut_order.begin(), cut_order.end());
@@ -928,6 +930,11 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
     trial.erase(trial.begin() + n);
     return best_slit;
   };
+  auto neighbours = [&] {  // a trial's start: the band's neighbours at 0..n-1
+    std::vector<FlatStrip> trial;
+    for (int s : around) trial.push_back(strips[s]);
+    return trial;
+  };
   auto half_of = [&](const std::vector<bool>& first, bool side) {
     std::vector<Triangle> chosen;
     for (int t = 0; t < count; ++t)
@@ -943,8 +950,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                       std::vector<bool>& took) {
     std::vector<bool> first;
     sides(cut, first);
-    trial.clear();
-    for (int s : around) trial.push_back(strips[s]);
+    trial = neighbours();
     took.assign(n, false);  // the neighbours that took a half
     trial.push_back(half_of(first, true));
     const int slit_first = place(trial, took, first, true, check_wide);
@@ -978,15 +984,12 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   // placed, on bands of at most kMostInThree triangles (on 16 meshes every band it took had at
   // most 125; larger ones failed at a cost).
   constexpr int kMostThirds = 4;
-  constexpr int kMostInThree = 256;
   int thirds = 0;
-  for (auto cut = order_one.begin();
-       in_three && count <= kMostInThree && kept_slit < 0 && cut != order_one.end(); ++cut) {
+  for (auto cut = order_one.begin(); kept_slit < 0 && cut != order_one.end(); ++cut) {
     std::vector<bool> first;
     sides(cut->second, first);
     for (const bool side : {true, false}) {
-      std::vector<FlatStrip> trial(around.size());
-      for (int i = 0; i < n; ++i) trial[i] = strips[around[i]];
+      std::vector<FlatStrip> trial = neighbours();
       std::vector<bool> took(n, false);
       trial.push_back(half_of(first, side));
       if (place(trial, took, first, side, true) < 0) continue;

@@ -2,9 +2,10 @@
 
 #include <gtest/gtest.h>
 
-#include <map>
+#include <algorithm>
 #include <random>
 
+#include "core/edge_map.h"
 #include "core/errors.h"
 #include "core/triangle_mesh.h"
 #include "core/union_find.h"
@@ -14,14 +15,8 @@ namespace {
 
 // The inner edges of a triangle set (edges shared by exactly two triangles), as triangle pairs.
 std::vector<std::pair<int, int>> inner_edges(const std::vector<Triangle>& triangles) {
-  std::map<std::pair<int, int>, std::vector<int>> by_edge;
-  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = triangles[t][k], b = triangles[t][(k + 1) % 3];
-      by_edge[{std::min(a, b), std::max(a, b)}].push_back(t);
-    }
   std::vector<std::pair<int, int>> inner;
-  for (const auto& [edge, ts] : by_edge)
+  for (const auto& [edge, ts] : edge_triangles(triangles))
     if (ts.size() == 2) inner.emplace_back(ts[0], ts[1]);
   return inner;
 }
