@@ -2,27 +2,38 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 #include <utility>
 
 namespace papercraft {
 
 std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles) {
-  std::map<std::pair<int, int>, int> directed;  // edge -> multiplicity
+  // Every directed edge, sorted: a run of equal ones is an edge and its multiplicity. Sorted
+  // vectors and binary search instead of maps: the merge calls this on every union it tries.
+  using Edge = std::pair<int, int>;
+  std::vector<Edge> directed;
+  directed.reserve(3 * triangles.size());
   for (const Triangle& t : triangles)
-    for (int i = 0; i < 3; ++i) ++directed[{t[i], t[(i + 1) % 3]}];
+    for (int i = 0; i < 3; ++i) directed.emplace_back(t[i], t[(i + 1) % 3]);
+  std::sort(directed.begin(), directed.end());
+  auto multiplicity = [&](const Edge& edge) {
+    const auto [begin, end] = std::equal_range(directed.begin(), directed.end(), edge);
+    return static_cast<int>(end - begin);
+  };
 
   // Boundary edges in sorted order, each with its multiplicity so a repeated edge (two
   // triangles on the same side, a non-manifold input) is not lost.
-  std::vector<std::pair<int, int>> edges;
-  for (const auto& [edge, count] : directed) {
-    auto reverse = directed.find({edge.second, edge.first});
-    int reverse_count = reverse == directed.end() ? 0 : reverse->second;
+  std::vector<Edge> edges;
+  for (std::size_t run = 0; run < directed.size();) {
+    std::size_t next = run;
+    while (next < directed.size() && directed[next] == directed[run]) ++next;
+    const Edge& edge = directed[run];
+    const int count = static_cast<int>(next - run);
+    const int reverse_count = multiplicity({edge.second, edge.first});
     for (int k = 0; k < count - reverse_count; ++k) edges.push_back(edge);
+    run = next;
   }
 
-  std::multimap<int, int> outgoing;  // v0 -> index into edges
-  for (int i = 0; i < static_cast<int>(edges.size()); ++i) outgoing.emplace(edges[i].first, i);
+  // `edges` is sorted, so the edges leaving a vertex are a run of it, in index order.
   std::vector<bool> used(edges.size(), false);
   std::vector<BoundaryEdge> result;
   result.reserve(edges.size());
@@ -35,10 +46,12 @@ std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles) 
       edge.v1 = edges[current].second;
       result.push_back(edge);
       current = -1;
-      auto [begin, end] = outgoing.equal_range(edge.v1);
-      for (auto it = begin; it != end; ++it) {
-        if (!used[it->second]) {
-          current = it->second;
+      auto it = std::lower_bound(edges.begin(), edges.end(),
+                                 Edge{edge.v1, std::numeric_limits<int>::min()});
+      for (; it != edges.end() && it->first == edge.v1; ++it) {
+        const auto index = static_cast<std::size_t>(it - edges.begin());
+        if (!used[index]) {
+          current = static_cast<int>(index);
           break;
         }
       }

@@ -17,43 +17,51 @@ namespace {
 
 constexpr double kFar = 1e30;
 
-// Squared distance transform of one row or column (Felzenszwalb & Huttenlocher): d[i] becomes
-// min_j (i - j)^2 + d[j]. `v`, `z` and `out` are scratch of size n, n + 1 and n.
-void distance_1d(double* d, int n, int stride, std::vector<int>& v, std::vector<double>& z,
-                 std::vector<double>& out) {
-  auto f = [&](int i) { return d[std::size_t(i) * stride] + double(i) * i; };
-  int k = 0;
-  v[0] = 0;
-  z[0] = -kFar;
-  z[1] = kFar;
-  for (int q = 1; q < n; ++q) {
-    double s = (f(q) - f(v[k])) / (2.0 * (q - v[k]));
-    while (k > 0 && s <= z[k]) {
-      --k;
-      s = (f(q) - f(v[k])) / (2.0 * (q - v[k]));
+// Per cell of each row of an nx by ny raster, the distance in cells along its row to the
+// nearest cell for which `is_seed` holds (0 on such a cell), or kNone where the row has none.
+constexpr int kNone = std::numeric_limits<int>::max();
+
+template <typename IsSeed>
+void row_distances(int nx, int ny, IsSeed is_seed, std::vector<int>& out) {
+  out.assign(std::size_t(nx) * ny, kNone);
+  for (int y = 0; y < ny; ++y) {
+    int* row = &out[std::size_t(y) * nx];
+    int last = -1;  // the last seed to the left
+    for (int x = 0; x < nx; ++x) {
+      if (is_seed(std::size_t(y) * nx + x)) last = x;
+      if (last >= 0) row[x] = x - last;
     }
-    ++k;
-    v[k] = q;
-    z[k] = s;
-    z[k + 1] = kFar;
+    last = -1;  // the last seed to the right
+    for (int x = nx - 1; x >= 0; --x) {
+      if (is_seed(std::size_t(y) * nx + x)) last = x;
+      if (last >= 0) row[x] = std::min(row[x], last - x);
+    }
   }
-  k = 0;
-  for (int q = 0; q < n; ++q) {
-    while (z[k + 1] < q) ++k;
-    const double dq = q - v[k];
-    out[q] = dq * dq + d[std::size_t(v[k]) * stride];
-  }
-  for (int q = 0; q < n; ++q) d[std::size_t(q) * stride] = out[q];
 }
 
-// In place: each cell's value becomes the squared distance (in cells) to the nearest cell
-// whose input value was 0 (others must be kFar).
-void distance_transform(std::vector<double>& grid, int width, int height) {
-  const int n = std::max(width, height);
-  std::vector<int> v(n);
-  std::vector<double> z(n + 1), out(n);
-  for (int y = 0; y < height; ++y) distance_1d(&grid[std::size_t(y) * width], width, 1, v, z, out);
-  for (int x = 0; x < width; ++x) distance_1d(&grid[x], height, width, v, z, out);
+// For each row offset dy = 0..reach, the largest dx >= 0 such that offset (dx, dy) is `near`
+// (near(dx * dx + dy * dy), a test monotone in the distance), or -1 where none is: a cell has a
+// seed near it when for some dy a seed lies in row y +- dy within that dx.
+template <typename Near>
+std::vector<int> half_widths(int reach, Near near) {
+  std::vector<int> width(std::size_t(reach) + 1, -1);
+  for (int dy = 0; dy <= reach; ++dy)
+    while (near(double(width[dy] + 1) * (width[dy] + 1) + double(dy) * dy)) ++width[dy];
+  return width;
+}
+
+// Whether the cell (x, y) has a seed near it: a seed in row y + dy within width[|dy|] of x
+// (`distances` from row_distances).
+bool seed_near(const std::vector<int>& distances, const std::vector<int>& width, int nx, int ny,
+               int x, int y) {
+  const int reach = static_cast<int>(width.size()) - 1;
+  for (int dy = -reach; dy <= reach; ++dy) {
+    const int row = y + dy;
+    const int w = width[std::abs(dy)];
+    if (row < 0 || row >= ny || w < 0) continue;
+    if (distances[std::size_t(row) * nx + x] <= w) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -72,10 +80,9 @@ NarrowCells narrow_cells(const std::vector<Vec2>& points, const std::vector<Tria
                          double width, const Vec2& origin, double cell, int nx, int ny,
                          std::array<int, 4> count_in = {0, 1 << 30, 0, 1 << 30}) {
   NarrowCells result;
-  auto counted = [&](std::size_t i) {
-    const int x = static_cast<int>(i % nx), y = static_cast<int>(i / nx);
-    return x >= count_in[0] && x <= count_in[1] && y >= count_in[2] && y <= count_in[3];
-  };
+  // The counted cells, clamped to the raster.
+  const int x_lo = std::max(0, count_in[0]), x_hi = std::min(nx - 1, count_in[1]);
+  const int y_lo = std::max(0, count_in[2]), y_hi = std::min(ny - 1, count_in[3]);
   // Inside: cell centres covered by a triangle.
   std::vector<char> inside(std::size_t(nx) * ny, 0);
   bool any = false;
@@ -102,30 +109,43 @@ NarrowCells narrow_cells(const std::vector<Vec2>& points, const std::vector<Tria
     }
   }
   if (!any) return result;
-  for (std::size_t i = 0; i < inside.size(); ++i) result.inside += inside[i] && counted(i);
+  for (int y = y_lo; y <= y_hi; ++y)
+    for (int x = x_lo; x <= x_hi; ++x) result.inside += inside[std::size_t(y) * nx + x];
 
-  // Distance of each inside cell to the outside: to the nearest outside cell centre less half
-  // a cell (the outline lies between the two). A disc of radius r fits around a centre at
-  // distance >= r.
+  // A disc of radius r (in cells) fits around an inside cell's centre when the nearest outside
+  // cell centre is at least r plus half a cell away (the outline lies between the two); the
+  // opening is every cell within r of such a centre. Both are tests of distance within a few
+  // cells (r is 4 at the default cell size), so each checks the rows within reach, using each
+  // row's distance to its nearest outside cell (or centre): exactly the tests
+  // sqrt(d^2) - 1/2 >= r and sqrt(d^2) <= r on the nearest one, without a distance transform.
   const double radius = 0.5 * width / cell;
-  std::vector<double> grid(inside.size());
-  for (std::size_t i = 0; i < inside.size(); ++i) grid[i] = inside[i] ? kFar : 0.0;
-  distance_transform(grid, nx, ny);
-  std::vector<double> centres(inside.size());
+  const int reach = static_cast<int>(std::ceil(radius + 0.5)) + 1;
+  const std::vector<int> outside_within =
+      half_widths(reach, [radius](double squared) { return std::sqrt(squared) - 0.5 < radius; });
+  const std::vector<int> centre_within =
+      half_widths(reach, [radius](double squared) { return std::sqrt(squared) <= radius; });
+  std::vector<int> distances;
+  row_distances(
+      nx, ny, [&](std::size_t i) { return !inside[i]; }, distances);
+  std::vector<char> centres(inside.size(), 0);
   long centre_cells = 0;
-  for (std::size_t i = 0; i < inside.size(); ++i) {
-    const bool centre = inside[i] && std::sqrt(grid[i]) - 0.5 >= radius;
-    centres[i] = centre ? 0.0 : kFar;
-    centre_cells += centre;
-  }
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      const std::size_t i = std::size_t(y) * nx + x;
+      if (inside[i] && !seed_near(distances, outside_within, nx, ny, x, y))
+        centres[i] = 1, ++centre_cells;
+    }
   if (centre_cells == 0) {
     result.narrow = result.inside;
     return result;
   }
-  // The opening: every cell within r of a centre.
-  distance_transform(centres, nx, ny);
-  for (std::size_t i = 0; i < inside.size(); ++i)
-    result.narrow += inside[i] && std::sqrt(centres[i]) > radius && counted(i);
+  row_distances(
+      nx, ny, [&](std::size_t i) { return centres[i] != 0; }, distances);
+  for (int y = y_lo; y <= y_hi; ++y)
+    for (int x = x_lo; x <= x_hi; ++x) {
+      const std::size_t i = std::size_t(y) * nx + x;
+      result.narrow += inside[i] && !seed_near(distances, centre_within, nx, ny, x, y);
+    }
   return result;
 }
 

@@ -21,8 +21,8 @@ struct PieceWidthOptions {
 /// orientation; overlapping triangles count once) that lies farther than `width / 2` from the
 /// centre of every disc of diameter `width` contained in the piece. 0 for a piece at least
 /// `width` wide everywhere (up to its corners), 1 for a band narrower than `width`. Measured on
-/// a raster (squared Euclidean distance transforms, Felzenszwalb & Huttenlocher 2012), so it is
-/// exact to about one cell. Returns 0 for a piece without area.
+/// a raster (Euclidean distances between cell centres, within the few cells a disc spans), so
+/// it is exact to about one cell. Returns 0 for a piece without area.
 /// \throws InvalidInputException if width is not positive and finite, a triangle index is out
 ///   of range or a point is not finite.
 double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,

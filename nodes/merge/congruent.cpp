@@ -68,14 +68,20 @@ std::array<double, 6> exact_key(const Vec3& p, const Vec3& q) {
   return {a[0], a[1], a[2], b[0], b[1], b[2]};
 }
 
-// Chains of boundary edges glued (opposite directions) between every pair of strips.
-std::vector<PairCandidate> shared_boundaries(const std::vector<FlatStrip>& strips) {
+// Chains of boundary edges glued (opposite directions) between every pair of strips, or,
+// given `with`, only the pairs strips[with] is in (the same pairs, in the same order, as the
+// whole list has; the edges of the others are looked at only where they lie on its rim).
+std::vector<PairCandidate> shared_boundaries(const std::vector<FlatStrip>& strips, int with = -1) {
+  std::set<std::array<double, 6>> rim;
+  if (with >= 0)
+    for (const BoundaryEdge& edge : strips[with].boundary)
+      rim.insert(exact_key(strips[with].vertices3d[edge.v0], strips[with].vertices3d[edge.v1]));
   std::map<std::array<double, 6>, std::vector<std::pair<int, int>>> groups;
   for (int s = 0; s < static_cast<int>(strips.size()); ++s)
     for (int e = 0; e < static_cast<int>(strips[s].boundary.size()); ++e) {
       const BoundaryEdge& edge = strips[s].boundary[e];
-      groups[exact_key(strips[s].vertices3d[edge.v0], strips[s].vertices3d[edge.v1])].push_back(
-          {s, e});
+      const auto key = exact_key(strips[s].vertices3d[edge.v0], strips[s].vertices3d[edge.v1]);
+      if (with < 0 || rim.count(key)) groups[key].push_back({s, e});
     }
   // (x, y) -> glued edge pairs (edge of x, edge of y).
   std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> glued;
@@ -84,7 +90,7 @@ std::vector<PairCandidate> shared_boundaries(const std::vector<FlatStrip>& strip
       for (std::size_t j = i + 1; j < group.size(); ++j) {
         auto [si, ei] = group[i];
         auto [sj, ej] = group[j];
-        if (si == sj) continue;
+        if (si == sj || (with >= 0 && si != with && sj != with)) continue;
         const BoundaryEdge& a = strips[si].boundary[ei];
         const BoundaryEdge& b = strips[sj].boundary[ej];
         if (strips[si].vertices3d[a.v0] != strips[sj].vertices3d[b.v1] ||
@@ -194,20 +200,21 @@ double mean_edge_length(const FlatStrip& strip) {
   return strip.triangles.empty() ? 0.0 : sum / (3.0 * strip.triangles.size());
 }
 
+// No directed edge is used by two triangles.
 bool consistently_oriented(const std::vector<Triangle>& triangles) {
-  std::set<std::pair<int, int>> directed;
-  for (const Triangle& t : triangles) {
-    for (int i = 0; i < 3; ++i) {
-      if (!directed.emplace(t[i], t[(i + 1) % 3]).second) return false;
-    }
-  }
-  return true;
+  std::vector<std::pair<int, int>> directed;
+  directed.reserve(3 * triangles.size());
+  for (const Triangle& t : triangles)
+    for (int i = 0; i < 3; ++i) directed.emplace_back(t[i], t[(i + 1) % 3]);
+  std::sort(directed.begin(), directed.end());
+  return std::adjacent_find(directed.begin(), directed.end()) == directed.end();
 }
 
 // Y moved onto X along one of their chains and welded, or false when no chain gives a
-// congruent, overlap-free union.
+// congruent, overlap-free union. Without `with_boundary` the union's boundary is left empty
+// (a caller that tries many unions and keeps one finds the boundary of that one).
 bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains,
-               const MergeOptions& options, FlatStrip& merged) {
+               const MergeOptions& options, FlatStrip& merged, bool with_boundary = true) {
   std::stable_sort(chains.begin(), chains.end(),
                    [](const Chain& a, const Chain& b) { return a.length > b.length; });
   const double mean_edge = 0.5 * (mean_edge_length(x) + mean_edge_length(y));
@@ -284,7 +291,8 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
     if (!consistently_oriented(merged.triangles) ||
         first_clockwise_triangle(merged.vertices2d, merged.triangles, 1e-10) >= 0)
       continue;
-    merged.boundary = flat_boundary(merged.triangles);
+    merged.boundary.clear();
+    if (with_boundary) merged.boundary = flat_boundary(merged.triangles);
     return true;
   }
   return false;
@@ -365,8 +373,9 @@ std::vector<Hinge> hinges_of(const std::vector<PairCandidate>& pairs,
 }
 
 // The triangles `chosen` of `strip` as a strip of their own, laid out as they lie, their
-// vertices renumbered (unused ones dropped).
-FlatStrip sub_strip(const FlatStrip& strip, const std::vector<Triangle>& chosen) {
+// vertices renumbered (unused ones dropped); its boundary left empty without `with_boundary`.
+FlatStrip sub_strip(const FlatStrip& strip, const std::vector<Triangle>& chosen,
+                    bool with_boundary = true) {
   FlatStrip part;
   part.id = strip.id;
   part.source_strip = strip.source_strip;
@@ -384,7 +393,7 @@ FlatStrip sub_strip(const FlatStrip& strip, const std::vector<Triangle>& chosen)
     }
     part.triangles.push_back(t);
   }
-  part.boundary = flat_boundary(part.triangles);
+  if (with_boundary) part.boundary = flat_boundary(part.triangles);
   return part;
 }
 
@@ -507,17 +516,21 @@ bool one_fan(const std::vector<Triangle>& triangles, int vertex) {
 bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, FlatStrip& taken) {
   const int n = static_cast<int>(strip.triangles.size());
   if (n < 2) return false;
-  std::map<std::pair<int, int>, std::vector<int>> by_edge;
+  // The triangles left, joined across the edges they share: (edge, triangle), sorted.
+  std::vector<std::pair<std::pair<int, int>, int>> by_edge;
+  by_edge.reserve(3 * n);
   for (int t = 0; t < n; ++t) {
     if (t == static_cast<int>(gone)) continue;
     for (int k = 0; k < 3; ++k) {
       const int a = strip.triangles[t][k], b = strip.triangles[t][(k + 1) % 3];
-      by_edge[{std::min(a, b), std::max(a, b)}].push_back(t);
+      by_edge.push_back({{std::min(a, b), std::max(a, b)}, t});
     }
   }
+  std::sort(by_edge.begin(), by_edge.end());
   UnionFind pieces(n);
-  for (const auto& [edge, users] : by_edge)
-    for (std::size_t i = 1; i < users.size(); ++i) pieces.unite(users[0], users[i]);
+  for (std::size_t i = 1; i < by_edge.size(); ++i)
+    if (by_edge[i].first == by_edge[i - 1].first)
+      pieces.unite(by_edge[i - 1].second, by_edge[i].second);
   std::map<std::size_t, double> area;
   for (int t = 0; t < n; ++t) {
     if (t == static_cast<int>(gone)) continue;
@@ -539,7 +552,7 @@ bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, Fl
   }
   for (int corner : moved_corners)
     if (!one_fan(kept, corner)) return false;
-  rest = sub_strip(strip, kept);
+  rest = sub_strip(strip, kept, false);  // its boundary is found only if it is kept
   taken = sub_strip(strip, moved);
   return true;
 }
@@ -675,6 +688,7 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
     }
     if (best_strip < 0) return false;
     grown = std::move(best);
+    best_rest.boundary = flat_boundary(best_rest.triangles);
     donors[best_strip] = std::move(best_rest);
     share_left.erase(best_strip);
   }
@@ -787,7 +801,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
     std::vector<FlatStrip> whole;
     for (int s : around) whole.push_back(strips[s]);
     whole.push_back(strip);
-    const std::vector<PairCandidate> pairs = shared_boundaries(whole);
+    const std::vector<PairCandidate> pairs = shared_boundaries(whole, n);
     const auto hinges = hinges_of(
         pairs, whole, [&](const PairCandidate& pair) { return pair.x < n && pair.y == n; });
     const double band_edge = mean_edge_length(strip);
@@ -894,7 +908,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   auto place = [&](std::vector<FlatStrip>& trial, std::vector<bool>& took,
                    const std::vector<bool>& first, bool side, bool check_wide) {
     const FlatStrip& half = trial[n];
-    const std::vector<PairCandidate> pairs = shared_boundaries(trial);
+    const std::vector<PairCandidate> pairs = shared_boundaries(trial, n);
     const auto hinges = hinges_of(
         pairs, trial, [&](const PairCandidate& pair) { return pair.x < n && pair.y == n; });
     // The unions that place it, the least slit first; with `check_wide`, the first of those
@@ -911,7 +925,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
       if (!may_fold(first, side, pair.x, key)) continue;
       ++tried[pair.x];
       FlatStrip merged;
-      if (!try_merge(trial[pair.x], half, {hinge.edge}, options, merged)) continue;
+      if (!try_merge(trial[pair.x], half, {hinge.edge}, options, merged, false)) continue;
       const int slit = slit_points(merged, trial[pair.x].vertices2d.size(), min_width);
       placed.emplace_back(slit, static_cast<int>(unions.size()));
       unions.emplace_back(pair.x, std::move(merged));
@@ -925,6 +939,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
       break;
     }
     if (best_x < 0) return -1;
+    best.boundary = flat_boundary(best.triangles);
     trial[best_x] = std::move(best);
     took[best_x] = true;
     trial.erase(trial.begin() + n);
@@ -1038,7 +1053,7 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     }
     if (small < 0) break;
     // Its shared boundaries, as single edges, the longest first: the hinge it folds over.
-    const std::vector<PairCandidate> pairs = shared_boundaries(strips);
+    const std::vector<PairCandidate> pairs = shared_boundaries(strips, small);
     const auto hinges = hinges_of(pairs, strips, [&](const PairCandidate& pair) {
       return pair.x == small || pair.y == small;
     });
@@ -1110,7 +1125,7 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
           (narrow < 0 || share[s] > share[narrow]))
         narrow = s;
     if (narrow < 0) break;
-    const std::vector<PairCandidate> pairs = shared_boundaries(strips);
+    const std::vector<PairCandidate> pairs = shared_boundaries(strips, narrow);
     const auto hinges = hinges_of(pairs, strips, [&](const PairCandidate& pair) {
       return pair.x == narrow || pair.y == narrow;
     });
