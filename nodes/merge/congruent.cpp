@@ -771,17 +771,15 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   const std::function<bool(int, const FlatStrip&)>& keeps_wide,
                   std::vector<int>& changed, bool in_three = true) {
   const int most_cuts = in_three ? 48 : 4;  // a half cut again: see "In three" below
-  constexpr int kMostInThree = 256;         // see "In three" below
   constexpr int kMostHinges = 12;
   // Checking a half's width rasters a box the size of the half: on a strip of thousands of
   // triangles (a large piece narrow along much of its rim; ChineseDragon's 3,629) the checks
-  // took 84 s of its 88 s merge, for the same pieces as without them. Such a strip is left to
-  // the growth.
+  // took 12 s of its 18 s merge (harness), for the same pieces as without them (6 s). Such a
+  // strip is left to the growth.
   constexpr int kMostTriangles = 2048;
   const FlatStrip& strip = strips[band];
   const int count = static_cast<int>(strip.triangles.size());
   if (count < 2 || count > kMostTriangles) return false;
-  const bool may_cut_in_three = in_three && count <= kMostInThree;
   // The band's neighbours (a boundary edge on its rim), worked on apart from the other strips:
   // trial holds them at 0..n-1, then a half of the band at n.
   const std::vector<int> around = strips_beside(strips, band);
@@ -889,7 +887,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
     const bool first_folds = any_fold(first, true), second_folds = any_fold(first, false);
     const int imbalance = std::abs(2 * cuts.first_side_size(e) - count);
     if (first_folds && second_folds) order.emplace_back(imbalance, e);
-    if (may_cut_in_three && (first_folds || second_folds)) order_one.emplace_back(imbalance, e);
+    if (in_three && (first_folds || second_folds)) order_one.emplace_back(imbalance, e);
   }
   const auto most_even = [&](std::vector<std::pair<int, std::size_t>>& cut_order) {
     std::stable_sort(cut_order.begin(), cut_order.end());
@@ -996,8 +994,7 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   // each half of any cut turns with them somewhere): one half placed, width checked, and the
   // other cut in two again (trying at most 4 cuts, as it is tried for several first halves).
   // The cuts where one half may fold, the most even first; at most kMostThirds first halves
-  // placed, on bands of at most kMostInThree triangles (on 16 meshes every band it took had at
-  // most 125; larger ones failed at a cost).
+  // placed.
   constexpr int kMostThirds = 4;
   int thirds = 0;
   for (auto cut = order_one.begin(); kept_slit < 0 && cut != order_one.end(); ++cut) {

@@ -102,8 +102,8 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// over it),
 /// kept where each union is less narrow than the strip and no narrower than its neighbour was
 /// (or than `narrow_share`), the cut leaving the least slit. Where no cut places both halves
-/// (its neighbours turn twice along it, so each half of any cut turns with them somewhere), a
-/// strip of at most 256 triangles is cut in three: one half placed and the other cut in two
+/// (its neighbours turn twice along it, so each half of any cut turns with them somewhere), it
+/// is cut in three: one half placed and the other cut in two
 /// again, at most 4 first halves and 4 cuts of each second half tried. A strip none takes is passed
 /// over until a join makes a union beside it (new edges to fold over, a neighbour less
 /// narrow), then tried again; those left after that stay as they are. Each of those still narrow

@@ -412,9 +412,11 @@ TEST(JoinSmallAndNarrowStrips, CrumbGivenUpIsTriedAgainAfterTheNarrowJoins) {
   EXPECT_LT(left.size(), first.size());
   EXPECT_EQ(triangle_count(joined), triangle_count(fixture.strips));
   expect_valid(joined);
-  for (const FlatStrip& strip : joined)
-    if (std::count(left.begin(), left.end(), strip.id) == 0)
+  for (const FlatStrip& strip : joined) {
+    if (std::count(left.begin(), left.end(), strip.id) == 0) {
       EXPECT_GE(area_of(strip), fixture.min_area) << strip.id;
+    }
+  }
 }
 
 FlatStrip flat_floor(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
