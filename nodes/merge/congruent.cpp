@@ -573,7 +573,7 @@ enum class GrowUntil { kMinArea, kWide };
 bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil until,
                           double min_area, double min_width, double narrow_share,
                           const MergeOptions& options) {
-  constexpr std::size_t kMostTaken = 64;
+  constexpr std::size_t kMostTaken = 128;
   auto share_of = [&](const FlatStrip& strip) {
     return min_width > 0.0 ? narrow_area_fraction(strip.vertices2d, strip.triangles, min_width)
                            : 0.0;

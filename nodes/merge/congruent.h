@@ -74,9 +74,9 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// `min_area` and neither it nor a neighbour it took from is narrower than `min_width` over more
 /// than options.narrow_join_share of its area (or than before; `min_width` 0: not checked): past
 /// `min_area` it goes on growing until that holds, giving up once 16 triangles in a row bring no
-/// such growth. Kept only within 64 triangles. The 3D surface is unchanged: only which piece prints
-/// a triangle moves, so the seam between them moves with it. The ids of small strips left go to
-/// `left` (when given); then label_seams runs on the result.
+/// such growth. Kept only within 128 triangles. The 3D surface is unchanged: only which piece
+/// prints a triangle moves, so the seam between them moves with it. The ids of small strips left go
+/// to `left` (when given); then label_seams runs on the result.
 ///
 /// \pre as merge_congruent.
 /// \throws InvalidInputException as merge_congruent.
@@ -110,7 +110,7 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// then grows as join_small_strips grows a crumb (its neighbours' triangles beside it, the one
 /// leaving it most compact first, each neighbour keeping at least `min_area` and getting no
 /// narrower than it was or than `narrow_share`), until it is narrow over at most `narrow_share`;
-/// within 64 triangles, and giving up once 16 taken in a row leave it no less narrow, or it stays
+/// within 128 triangles, and giving up once 16 taken in a row leave it no less narrow, or it stays
 /// as it is. Then label_seams runs on the result.
 ///
 /// \pre as merge_congruent.
