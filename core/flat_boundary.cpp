@@ -1,6 +1,7 @@
 #include "core/flat_boundary.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -58,6 +59,16 @@ std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles) 
     }
   }
   return result;
+}
+
+double flat_area(const FlatStrip& strip) {
+  double area = 0.0;
+  for (const Triangle& t : strip.triangles) {
+    const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
+    const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
+    area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
+  }
+  return area;
 }
 
 int first_clockwise_triangle(const std::vector<Vec2>& points,

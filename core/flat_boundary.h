@@ -18,6 +18,9 @@ namespace papercraft {
 /// the loop follows the first unused edge, so such a loop may be split differently.
 std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles);
 
+/// The area of a flat strip's triangles in the plane (each counted by its absolute value).
+double flat_area(const FlatStrip& strip);
+
 /// The first triangle that turns clockwise in `points`, i.e. whose cross product is below
 /// -`relative` times its longest edge squared, or -1 if none does. Not judged: triangles
 /// with a repeated index, and triangles whose longest edge is under 1e-6 of the bounding-box

@@ -334,16 +334,6 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips, const Merg
 
 namespace {
 
-double flat_area(const FlatStrip& strip) {
-  double area = 0.0;
-  for (const Triangle& t : strip.triangles) {
-    const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
-    const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
-    area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
-  }
-  return area;
-}
-
 // Single-edge hinges of the pairs `wanted` picks, the longest first:
 // (pair index, edge) over shared_boundaries(strips).
 struct Hinge {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/flat_boundary.h"
 #include "core/piece_width.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
@@ -49,12 +50,7 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
   const PieceLimits limits = model.piece_limits();
   for (const FlatStrip& strip : strips) {
     if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
-      double area = 0.0;
-      for (const Triangle& t : strip.triangles) {
-        const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
-        const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
-        area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
-      }
+      const double area = flat_area(strip);
       if (area < limits.min_area) {  // else a narrow strip was joined to it since
         const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
                                  std::to_string(std::lround(area * scale * scale)) +

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "core/errors.h"
+#include "support/narrow_raster_reference.h"
 
 namespace papercraft {
 namespace {
@@ -70,14 +71,6 @@ void plate(bool tab, std::vector<Vec2>& points, std::vector<Triangle>& triangles
   triangles.insert(triangles.end(), {{4, 5, 6}, {4, 6, 7}});
 }
 
-double area_of(const std::vector<Vec2>& p, const std::vector<Triangle>& triangles) {
-  double area = 0.0;
-  for (const Triangle& t : triangles)
-    area += 0.5 * std::abs((p[t[1]] - p[t[0]]).x() * (p[t[2]] - p[t[0]]).y() -
-                           (p[t[1]] - p[t[0]]).y() * (p[t[2]] - p[t[0]]).x());
-  return area;
-}
-
 TEST(PieceWidth, RasterInABoxOverThePieceIsItsRaster) {
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;
@@ -139,67 +132,6 @@ TEST(PieceWidth, RasterInABoxAroundAnEditGivesTheRasterOfTheWhole) {
   EXPECT_NEAR(whole.fraction(), narrow_area_fraction(after_points, after, width), 1e-4);
 }
 
-// The raster's counts, by brute force on its own grid (its origin and cell): a cell is inside
-// when a triangle covers its centre; a centre when no outside cell centre lies closer than
-// r + 1/2 cells (r the disc's radius in cells); narrow when inside and no centre lies within r.
-NarrowRaster brute_force_raster(const std::vector<Vec2>& points,
-                                const std::vector<Triangle>& triangles, double width,
-                                const NarrowRaster& grid) {
-  Vec2 lo = points[0], hi = points[0];
-  for (const Vec2& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  const double r = 0.5 * width / grid.cell;
-  const int pad = static_cast<int>(std::ceil(r)) + 2;
-  const int x0 = static_cast<int>(std::floor((lo.x() - grid.origin.x()) / grid.cell)) - pad;
-  const int y0 = static_cast<int>(std::floor((lo.y() - grid.origin.y()) / grid.cell)) - pad;
-  const int nx = static_cast<int>(std::ceil((hi.x() - lo.x()) / grid.cell)) + 2 * pad + 1;
-  const int ny = static_cast<int>(std::ceil((hi.y() - lo.y()) / grid.cell)) + 2 * pad + 1;
-  std::vector<char> inside(std::size_t(nx) * ny, 0), centre(inside.size(), 0);
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) {
-      const Vec2 c(x0 + x + 0.5, y0 + y + 0.5);
-      for (const Triangle& t : triangles) {
-        Vec2 v[3];
-        for (int k = 0; k < 3; ++k) v[k] = (points[t[k]] - grid.origin) / grid.cell;
-        auto cross = [](const Vec2& p, const Vec2& q, const Vec2& s) {
-          return (q - p).x() * (s - p).y() - (q - p).y() * (s - p).x();
-        };
-        const double area = cross(v[0], v[1], v[2]);
-        if (area == 0.0) continue;
-        const double sign = area > 0 ? 1.0 : -1.0;
-        if (sign * cross(v[0], v[1], c) >= 0 && sign * cross(v[1], v[2], c) >= 0 &&
-            sign * cross(v[2], v[0], c) >= 0)
-          inside[std::size_t(y) * nx + x] = 1;
-      }
-    }
-  auto at = [&](const std::vector<char>& cells, int x, int y) {
-    return x >= 0 && x < nx && y >= 0 && y < ny && cells[std::size_t(y) * nx + x];
-  };
-  const int reach = static_cast<int>(std::ceil(r)) + 1;
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) {
-      if (!at(inside, x, y)) continue;
-      bool fits = true;
-      for (int dy = -reach; dy <= reach && fits; ++dy)
-        for (int dx = -reach; dx <= reach && fits; ++dx)
-          if (!at(inside, x + dx, y + dy) && std::sqrt(double(dx * dx + dy * dy)) - 0.5 < r)
-            fits = false;
-      centre[std::size_t(y) * nx + x] = fits;
-    }
-  NarrowRaster result = grid;
-  result.inside = result.narrow = 0;
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) {
-      if (!at(inside, x, y)) continue;
-      ++result.inside;
-      bool covered = false;
-      for (int dy = -reach; dy <= reach && !covered; ++dy)
-        for (int dx = -reach; dx <= reach && !covered; ++dx)
-          covered = at(centre, x + dx, y + dy) && std::sqrt(double(dx * dx + dy * dy)) <= r;
-      result.narrow += !covered;
-    }
-  return result;
-}
-
 TEST(PieceWidth, RasterCountsMatchBruteForce) {
   // Random soups of a few triangles (bands, fans, overlaps, both orientations) and widths,
   // on the default raster and on one coarsened by max_cells (a disc of 1 to 3 cells).
@@ -218,10 +150,17 @@ TEST(PieceWidth, RasterCountsMatchBruteForce) {
     PieceWidthOptions options;
     if (trial % 3 == 2) options.max_cells = 2'000;
     const NarrowRaster raster = narrow_raster(points, triangles, width, options);
-    const NarrowRaster expected = brute_force_raster(points, triangles, width, raster);
+    const NarrowRaster expected =
+        testing::brute_force_narrow_raster(points, triangles, width, raster);
     ASSERT_GT(expected.inside, 0) << "trial " << trial;
     EXPECT_EQ(raster.inside, expected.inside) << "trial " << trial;
     EXPECT_EQ(raster.narrow, expected.narrow) << "trial " << trial;
+    // ... and by distance transforms, as the bench's reference times it.
+    const NarrowRaster transformed = testing::distance_transform_narrow_raster(
+        testing::inside_cells(points, triangles, raster, static_cast<int>(width / raster.cell) + 2),
+        width, raster);
+    EXPECT_EQ(transformed.inside, expected.inside) << "trial " << trial;
+    EXPECT_EQ(transformed.narrow, expected.narrow) << "trial " << trial;
     narrow_seen += raster.narrow > 0;
     wide_seen += raster.narrow < raster.inside;
   }

@@ -355,7 +355,9 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
   for (const std::string& note : layout.warnings)
     divided = divided || note.rfind("triangles divided", 0) == 0;
   for (const FlatStrip& s : strips) {
-    if (!divided) EXPECT_EQ(triangles_per_strip[s.id], s.triangles.size());
+    if (!divided) {
+      EXPECT_EQ(triangles_per_strip[s.id], s.triangles.size());
+    }
     double area = 0;
     for (const Triangle& t : s.triangles)
       area += 0.5 * std::abs(cross(s.vertices2d[t[1]] - s.vertices2d[t[0]],
@@ -379,7 +381,9 @@ void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStri
   }
   for (const auto& [label, count] : label_count) {
     // One label may name both sides of a slit in a piece (a seam of the piece with itself).
-    if (count != 1 || !self_seams.count(label)) EXPECT_EQ(count, 2) << "seam label " << label;
+    if (count != 1 || !self_seams.count(label)) {
+      EXPECT_EQ(count, 2) << "seam label " << label;
+    }
     if (options.tab_width_mm > 0 && options.joining_strips) {
       EXPECT_EQ(tab_count[label] + joint_count[label], 1) << "tabs and joints of seam " << label;
     } else if (options.tab_width_mm > 0) {
