@@ -4,10 +4,12 @@
 // seam can fail to meet (tests/support/pattern_checks.h), then the totals. "narrow alone" and
 // "small alone" count those that are a separate part of the input by themselves (a narrow
 // strip glued to no other, a small one whose whole part is under the area bound): no join
-// can widen or grow them.
+// can widen or grow them. "slivers" (the last column) counts the pieces holding one connected
+// region narrower than --narrow-mm of more than --sliver-mm2, whatever its share of the piece:
+// a thin band glued on along a large piece.
 //
 //   piece_quality OUT/eight OUT/cactus ...            # model folders
-//   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 OUT/*/
+//   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 --sliver-mm2 100 OUT/*/
 //
 // Exit status 0 (findings are data), 2 for a bad command line or unreadable folder.
 
@@ -40,7 +42,7 @@ int count_notes(const nlohmann::json& report, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  double narrow_mm = 3.0, narrow_share = 0.25, small_mm2 = 100.0;
+  double narrow_mm = 3.0, narrow_share = 0.25, small_mm2 = 100.0, sliver_mm2 = 100.0;
   std::vector<std::filesystem::path> models;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -57,6 +59,8 @@ int main(int argc, char** argv) {
       narrow_share = value();
     else if (arg == "--small-mm2")
       small_mm2 = value();
+    else if (arg == "--sliver-mm2")
+      sliver_mm2 = value();
     else if (arg.rfind("--", 0) == 0) {
       std::fprintf(stderr, "unknown option %s\n", arg.c_str());
       return 2;
@@ -66,15 +70,15 @@ int main(int argc, char** argv) {
   if (models.empty()) {
     std::fprintf(stderr,
                  "usage: piece_quality [--narrow-mm 3] [--narrow-share 0.25] "
-                 "[--small-mm2 100] MODEL_DIR...\n");
+                 "[--small-mm2 100] [--sliver-mm2 100] MODEL_DIR...\n");
     return 2;
   }
   std::printf(
       "| model | pieces | narrow | narrow alone | small | small alone | seam edges | no partner | "
       "length differs | other label | labels | not two chains | sides differ | "
-      "notes unmatched |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  long total[13] = {};
+      "notes unmatched | slivers |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  long total[14] = {};
   for (const auto& dir : models) {
     nlohmann::json strips, report;
     try {
@@ -85,12 +89,12 @@ int main(int argc, char** argv) {
       return 2;
     }
     const double mm_per_unit = report.at("result").at("mm_per_unit").get<double>();
-    const auto pieces =
-        papercraft::testing::check_pieces(strips, mm_per_unit, narrow_mm, narrow_share, small_mm2);
+    const auto pieces = papercraft::testing::check_pieces(strips, mm_per_unit, narrow_mm,
+                                                          narrow_share, small_mm2, sliver_mm2);
     const auto seams = papercraft::testing::check_seams(strips);
     const int unmatched_notes =
         count_notes(report, "ends do not match") + count_notes(report, "has no partner edge");
-    const long row[13] = {pieces.pieces,
+    const long row[14] = {pieces.pieces,
                           pieces.narrow,
                           pieces.narrow_alone,
                           pieces.small,
@@ -102,20 +106,22 @@ int main(int argc, char** argv) {
                           seams.labels,
                           seams.labels_not_two_chains,
                           seams.labels_with_sides_differing,
-                          unmatched_notes};
-    for (int k = 0; k < 13; ++k) total[k] += row[k];
+                          unmatched_notes,
+                          pieces.slivers};
+    for (int k = 0; k < 14; ++k) total[k] += row[k];
     std::printf(
-        "| %s | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld |\n",
+        "| %s | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld "
+        "|\n",
         dir.filename().empty() ? dir.parent_path().filename().c_str() : dir.filename().c_str(),
         row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9], row[10],
-        row[11], row[12]);
+        row[11], row[12], row[13]);
     for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }
   std::printf(
       "| **total** | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld "
-      "|\n",
+      "| %ld |\n",
       total[0], total[1], total[2], total[3], total[4], total[5], total[6], total[7], total[8],
-      total[9], total[10], total[11], total[12]);
+      total[9], total[10], total[11], total[12], total[13]);
   return 0;
 }

@@ -76,10 +76,13 @@ struct NarrowCells {
 
 // Counts over the cells whose index lies in [x_lo, x_hi] x [y_lo, y_hi] (all of them by
 // default); the triangles are checked by the callers.
+// `narrow_mask`, where given, gets the narrow cells of the whole raster (1 where narrow).
 NarrowCells narrow_cells(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
                          double width, const Vec2& origin, double cell, int nx, int ny,
-                         std::array<int, 4> count_in = {0, 1 << 30, 0, 1 << 30}) {
+                         std::array<int, 4> count_in = {0, 1 << 30, 0, 1 << 30},
+                         std::vector<char>* narrow_mask = nullptr) {
   NarrowCells result;
+  if (narrow_mask) narrow_mask->assign(std::size_t(nx) * ny, 0);
   // The counted cells, clamped to the raster.
   const int x_lo = std::max(0, count_in[0]), x_hi = std::min(nx - 1, count_in[1]);
   const int y_lo = std::max(0, count_in[2]), y_hi = std::min(ny - 1, count_in[3]);
@@ -137,14 +140,19 @@ NarrowCells narrow_cells(const std::vector<Vec2>& points, const std::vector<Tria
     }
   if (centre_cells == 0) {
     result.narrow = result.inside;
+    if (narrow_mask) *narrow_mask = inside;
     return result;
   }
   row_distances(
       nx, ny, [&](std::size_t i) { return centres[i] != 0; }, distances);
-  for (int y = y_lo; y <= y_hi; ++y)
-    for (int x = x_lo; x <= x_hi; ++x) {
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      const bool counted = x >= x_lo && x <= x_hi && y >= y_lo && y <= y_hi;
+      if (!counted && !narrow_mask) continue;
       const std::size_t i = std::size_t(y) * nx + x;
-      result.narrow += inside[i] && !seed_near(distances, centre_within, nx, ny, x, y);
+      const bool narrow = inside[i] && !seed_near(distances, centre_within, nx, ny, x, y);
+      result.narrow += narrow && counted;
+      if (narrow_mask) (*narrow_mask)[i] = narrow;
     }
   return result;
 }
@@ -167,9 +175,14 @@ void check_flat_piece(const char* what, const std::vector<Vec2>& points,
 
 }  // namespace
 
-NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
-                           double width, const PieceWidthOptions& options) {
-  check_flat_piece("narrow_raster", points, triangles, width);
+namespace {
+
+// narrow_raster, and the narrow cells of its raster (nx by ny) where `narrow_mask` is given.
+NarrowRaster raster_of(const char* what, const std::vector<Vec2>& points,
+                       const std::vector<Triangle>& triangles, double width,
+                       const PieceWidthOptions& options, std::vector<char>* narrow_mask = nullptr,
+                       int* nx_out = nullptr) {
+  check_flat_piece(what, points, triangles, width);
   NarrowRaster raster;
   if (triangles.empty()) return raster;
   Vec2 lo = Vec2::Constant(kFar), hi = Vec2::Constant(-kFar);
@@ -184,10 +197,55 @@ NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Tr
   const int ny = static_cast<int>(std::ceil(extent.y() / cell)) + 1;
   raster.origin = lo - Vec2::Constant(width);
   raster.cell = cell;
-  const NarrowCells counts = narrow_cells(points, triangles, width, raster.origin, cell, nx, ny);
+  const NarrowCells counts = narrow_cells(points, triangles, width, raster.origin, cell, nx, ny,
+                                          {0, 1 << 30, 0, 1 << 30}, narrow_mask);
   raster.inside = counts.inside;
   raster.narrow = counts.narrow;
+  if (nx_out) *nx_out = nx;
   return raster;
+}
+
+}  // namespace
+
+NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
+                           double width, const PieceWidthOptions& options) {
+  return raster_of("narrow_raster", points, triangles, width, options);
+}
+
+double largest_narrow_region(const std::vector<Vec2>& points,
+                             const std::vector<Triangle>& triangles, double width,
+                             const PieceWidthOptions& options) {
+  std::vector<char> narrow;
+  int nx = 0;
+  const NarrowRaster raster =
+      raster_of("largest_narrow_region", points, triangles, width, options, &narrow, &nx);
+  if (raster.narrow == 0) return 0.0;
+  const int ny = static_cast<int>(narrow.size()) / nx;
+  // Regions of narrow cells joined across sides or corners, by flood fill.
+  std::vector<char> seen(narrow.size(), 0);
+  std::vector<std::size_t> stack;
+  long largest = 0;
+  for (std::size_t start = 0; start < narrow.size(); ++start) {
+    if (!narrow[start] || seen[start]) continue;
+    long size = 0;
+    seen[start] = 1;
+    stack.assign(1, start);
+    while (!stack.empty()) {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      ++size;
+      const int x = static_cast<int>(i % nx), y = static_cast<int>(i / nx);
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int u = x + dx, v = y + dy;
+          if (u < 0 || v < 0 || u >= nx || v >= ny) continue;
+          const std::size_t j = std::size_t(v) * nx + u;
+          if (narrow[j] && !seen[j]) seen[j] = 1, stack.push_back(j);
+        }
+    }
+    largest = std::max(largest, size);
+  }
+  return double(largest) * raster.cell * raster.cell;
 }
 
 double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,

@@ -48,6 +48,30 @@ TEST(PieceWidth, DumbbellIsNarrowInItsHandleOnly) {
   EXPECT_LT(fraction, handle + 0.02);
 }
 
+TEST(PieceWidth, LargestNarrowRegionIsOneSliverNotTheirSum) {
+  // A 100 x 20 plate with two teeth above it: 1.5 x 30 (a sliver, 45 mm^2) and 1 x 20 (20 mm^2).
+  // At 3 mm both teeth are narrow regions of their own, joined to the plate only where they
+  // meet it; the largest region is the longer tooth (and the plate's corners beside it), not
+  // the two together, however small a share of the piece either is.
+  const std::vector<Vec2> points = {{0, 0},     {100, 0}, {100, 20}, {0, 20},  {20, 20}, {21.5, 20},
+                                    {21.5, 50}, {20, 50}, {60, 20},  {61, 20}, {61, 40}, {60, 40}};
+  const std::vector<Triangle> triangles = {{0, 1, 2}, {0, 2, 3},  {4, 5, 6},
+                                           {4, 6, 7}, {8, 9, 10}, {8, 10, 11}};
+  const double largest = largest_narrow_region(points, triangles, 3.0);
+  EXPECT_GT(largest, 40.0);
+  EXPECT_LT(largest, 52.0);
+  EXPECT_LT(narrow_area_fraction(points, triangles, 3.0), 0.04);
+  // The plate alone: only its corners, each a small region.
+  const std::vector<Triangle> plate = {{0, 1, 2}, {0, 2, 3}};
+  EXPECT_LT(largest_narrow_region(points, plate, 3.0), 2.0);
+  EXPECT_GT(largest_narrow_region(points, plate, 3.0), 0.0);
+  // A band narrower than the disc everywhere: the whole band.
+  std::vector<Vec2> band;
+  std::vector<Triangle> band_triangles;
+  rectangle(150, 2.0, band, band_triangles);
+  EXPECT_NEAR(largest_narrow_region(band, band_triangles, 3.0), 300.0, 20.0);  // to a row of cells
+}
+
 TEST(PieceWidth, OrientationAndOverlapDoNotMatter) {
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;

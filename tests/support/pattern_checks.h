@@ -197,6 +197,10 @@ struct PieceFindings {
   /// Of the narrow ones, those that are a whole piece of the model on their own (no seam to
   /// another strip): a separate part of the input that thin, with no neighbour to join.
   int narrow_alone = 0;
+  /// Pieces holding one connected region narrower than `narrow_mm` of more than `sliver_mm2`
+  /// (largest_narrow_region): a band glued on along a wider piece, or running out of one,
+  /// which the share does not show when the piece is large.
+  int slivers = 0;
   double smallest_mm2 = 0.0;
   double most_narrow_share = 0.0;
   std::vector<std::string> problems;
@@ -205,7 +209,7 @@ struct PieceFindings {
 /// Sizes on paper of the flat strips (model units times `mm_per_unit`).
 inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_unit,
                                   double narrow_mm = 3.0, double narrow_share = 0.25,
-                                  double small_mm2 = 100.0) {
+                                  double small_mm2 = 100.0, double sliver_mm2 = 100.0) {
   PieceFindings findings;
   findings.smallest_mm2 = 1e300;
   // Strips joined by seams, by index.
@@ -244,6 +248,13 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
       if (findings.problems.size() < 8)
         findings.problems.push_back("strip " + id + ": " + std::to_string(int(share * 100)) +
                                     "% narrower than " + std::to_string(narrow_mm) + " mm");
+    }
+    if (largest_narrow_region(points, triangles, narrow_mm) > sliver_mm2) {
+      ++findings.slivers;
+      if (findings.problems.size() < 8)
+        findings.problems.push_back("strip " + id + ": a region narrower than " +
+                                    std::to_string(narrow_mm) + " mm of over " +
+                                    std::to_string(sliver_mm2) + " mm^2");
     }
     if (area < small_mm2) {
       ++findings.small;
