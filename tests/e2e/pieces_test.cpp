@@ -379,6 +379,18 @@ TEST(Pieces, CrowdedLabelsPlacedFirstLeaveNoTextOverAnotherOnDino) {
   EXPECT_EQ(overlapping, 0);
 }
 
+// The default config with the merge's narrow joins off (narrow_join_share 1).
+std::string without_narrow_joins() {
+  const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
+  std::string text = default_config_text();
+  const auto at = text.find(merge_line);
+  EXPECT_NE(at, std::string::npos) << "the default config's merge line changed";
+  if (at != std::string::npos)
+    text.replace(at, merge_line.size(),
+                 "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
+  return text;
+}
+
 // anchor_dense at 2% with the merge's narrow joins off (narrow_join_share: 1; femur, three_peaks
 // and then anchor_dense itself lost the case as the merge learnt to fold or grow their narrow
 // strips): a long thin strip is split where it bends, which saves a page, so the tries of the
@@ -388,12 +400,8 @@ TEST(Pieces, CrowdedLabelsPlacedFirstLeaveNoTextOverAnotherOnDino) {
 TEST(Pieces, LabelsArrangedInAnEarlierTryOfTheLayoutNameTheirOwnPieceAndSeam) {
   const auto meshes = libcgal_demo_meshes({"anchor_dense"});
   if (meshes.empty()) GTEST_SKIP() << "libcgal-demo is not installed";
-  const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
-  std::string narrow_kept = default_config_text();
-  ASSERT_NE(narrow_kept.find(merge_line), std::string::npos);
-  narrow_kept.replace(narrow_kept.find(merge_line), merge_line.size(),
-                      "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
-  const auto out = run_pipeline(meshes.at("anchor_dense"), "2%", "anchor_dense", 0, narrow_kept);
+  const auto out =
+      run_pipeline(meshes.at("anchor_dense"), "2%", "anchor_dense", 0, without_narrow_joins());
   ASSERT_TRUE(out.result.ok) << out.result.error;
   LayoutOptions options;
   options.scale = out.report.at("result").at("mm_per_unit").get<double>();
@@ -426,12 +434,8 @@ TEST(Pieces, LabelsArrangedInAnEarlierTryOfTheLayoutNameTheirOwnPieceAndSeam) {
 TEST(Pieces, NarrowStripsAreFoldedOutOfANeighbourOnThreePeaks) {
   const auto meshes = libcgal_demo_meshes({"three_peaks"});
   if (meshes.empty()) GTEST_SKIP() << "libcgal-demo is not installed";
-  const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
-  std::string apart = default_config_text();
-  ASSERT_NE(apart.find(merge_line), std::string::npos);
-  apart.replace(apart.find(merge_line), merge_line.size(),
-                "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
-  const auto before = run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks", 0, apart);
+  const auto before =
+      run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks", 0, without_narrow_joins());
   const auto after = run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks");
   ASSERT_TRUE(before.result.ok) << before.result.error;
   ASSERT_TRUE(after.result.ok) << after.result.error;
