@@ -173,10 +173,6 @@ void check_flat_piece(const char* what, const std::vector<Vec2>& points,
     }
 }
 
-}  // namespace
-
-namespace {
-
 // narrow_raster, and the narrow cells of its raster (nx by ny) where `narrow_mask` is given.
 NarrowRaster raster_of(const char* what, const std::vector<Vec2>& points,
                        const std::vector<Triangle>& triangles, double width,
@@ -214,11 +210,12 @@ NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Tr
 
 double largest_narrow_region(const std::vector<Vec2>& points,
                              const std::vector<Triangle>& triangles, double width,
-                             const PieceWidthOptions& options) {
+                             const PieceWidthOptions& options, NarrowRaster* raster_out) {
   std::vector<char> narrow;
   int nx = 0;
   const NarrowRaster raster =
       raster_of("largest_narrow_region", points, triangles, width, options, &narrow, &nx);
+  if (raster_out) *raster_out = raster;
   if (raster.narrow == 0) return 0.0;
   const int ny = static_cast<int>(narrow.size()) / nx;
   // Regions of narrow cells joined across sides or corners, by flood fill.

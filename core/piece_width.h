@@ -28,15 +28,6 @@ struct PieceWidthOptions {
 double narrow_area_fraction(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles,
                             double width, const PieceWidthOptions& options = {});
 
-/// The narrow part of the piece (the cells narrow_area_fraction counts as narrow) split into
-/// connected regions (cells joined across sides or corners): the area of the largest, in the
-/// points' units squared. A tip (a cone's apex, a corner) is a small region, a sliver (a band
-/// narrower than `width` along a length) a long one, however small its share of the piece.
-/// \throws InvalidInputException as narrow_area_fraction.
-double largest_narrow_region(const std::vector<Vec2>& points,
-                             const std::vector<Triangle>& triangles, double width,
-                             const PieceWidthOptions& options = {});
-
 /// The raster narrow_area_fraction measures a flat piece on: square cells of side `cell`, cell
 /// (i, j) centred at origin + (i + 1/2, j + 1/2) cell; `inside` counts the cells whose centre
 /// the piece covers, `narrow` those of them that no disc of the diameter inside covers.
@@ -66,6 +57,16 @@ NarrowRaster narrow_raster(const std::vector<Vec2>& points, const std::vector<Tr
 NarrowRaster narrow_raster_in_box(const std::vector<Vec2>& points,
                                   const std::vector<Triangle>& triangles, double width,
                                   const Vec2& lo, const Vec2& hi, const NarrowRaster& grid);
+
+/// The narrow part of the piece (the cells narrow_area_fraction counts as narrow) split into
+/// connected regions (cells joined across sides or corners): the area of the largest, in the
+/// points' units squared. A tip (a cone's apex, a corner) is a small region, a sliver (a band
+/// narrower than `width` along a length) a long one, however small its share of the piece.
+/// `raster`, where given, gets narrow_raster of the piece (measured on the way).
+/// \throws InvalidInputException as narrow_area_fraction.
+double largest_narrow_region(const std::vector<Vec2>& points,
+                             const std::vector<Triangle>& triangles, double width,
+                             const PieceWidthOptions& options = {}, NarrowRaster* raster = nullptr);
 
 /// The same share for a piece of surface in 3D, with Euclidean distances: sample points
 /// (spaced at most `cell_fraction` times `width` apart over every triangle) farther than

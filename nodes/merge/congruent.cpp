@@ -68,14 +68,20 @@ std::array<double, 6> exact_key(const Vec3& p, const Vec3& q) {
   return {a[0], a[1], a[2], b[0], b[1], b[2]};
 }
 
+// The 3D edges (exact_key) of a strip's boundary.
+std::set<std::array<double, 6>> rim_of(const FlatStrip& strip) {
+  std::set<std::array<double, 6>> rim;
+  for (const BoundaryEdge& e : strip.boundary)
+    rim.insert(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1]));
+  return rim;
+}
+
 // Chains of boundary edges glued (opposite directions) between every pair of strips, or,
 // given `with`, only the pairs strips[with] is in (the same pairs, in the same order, as the
 // whole list has; the edges of the others are looked at only where they lie on its rim).
 std::vector<PairCandidate> shared_boundaries(const std::vector<FlatStrip>& strips, int with = -1) {
-  std::set<std::array<double, 6>> rim;
-  if (with >= 0)
-    for (const BoundaryEdge& edge : strips[with].boundary)
-      rim.insert(exact_key(strips[with].vertices3d[edge.v0], strips[with].vertices3d[edge.v1]));
+  const std::set<std::array<double, 6>> rim =
+      with >= 0 ? rim_of(strips[with]) : std::set<std::array<double, 6>>{};
   std::map<std::array<double, 6>, std::vector<std::pair<int, int>>> groups;
   for (int s = 0; s < static_cast<int>(strips.size()); ++s)
     for (int e = 0; e < static_cast<int>(strips[s].boundary.size()); ++e) {
@@ -391,9 +397,7 @@ FlatStrip sub_strip(const FlatStrip& strip, const std::vector<Triangle>& chosen,
 // order.
 std::vector<int> strips_beside(const std::vector<FlatStrip>& strips, int index) {
   const FlatStrip& strip = strips[index];
-  std::set<std::array<double, 6>> rim;
-  for (const BoundaryEdge& e : strip.boundary)
-    rim.insert(exact_key(strip.vertices3d[e.v0], strip.vertices3d[e.v1]));
+  const std::set<std::array<double, 6>> rim = rim_of(strip);
   std::vector<int> around;
   for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
     if (s == index) continue;
@@ -622,9 +626,7 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
         return false;
       }
     }
-    std::set<std::array<double, 6>> rim;
-    for (const BoundaryEdge& e : grown.boundary)
-      rim.insert(exact_key(grown.vertices3d[e.v0], grown.vertices3d[e.v1]));
+    const std::set<std::array<double, 6>> rim = rim_of(grown);
     // The neighbours' triangles on the rim: those with a boundary edge on it.
     std::vector<Candidate> candidates;
     for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
@@ -1092,9 +1094,7 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
   // A strip given up beside a union is tried again: the union is less narrow than the
   // neighbour it folded onto was, or has new edges for a hinge.
   const auto retry_beside = [&](const FlatStrip& joined) {
-    std::set<std::array<double, 6>> rim;
-    for (const BoundaryEdge& e : joined.boundary)
-      rim.insert(exact_key(joined.vertices3d[e.v0], joined.vertices3d[e.v1]));
+    const std::set<std::array<double, 6>> rim = rim_of(joined);
     for (const FlatStrip& strip : strips) {
       if (!given_up.count(strip.id)) continue;
       for (const BoundaryEdge& e : strip.boundary)

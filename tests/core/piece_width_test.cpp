@@ -61,6 +61,13 @@ TEST(PieceWidth, LargestNarrowRegionIsOneSliverNotTheirSum) {
   EXPECT_GT(largest, 40.0);
   EXPECT_LT(largest, 52.0);
   EXPECT_LT(narrow_area_fraction(points, triangles, 3.0), 0.04);
+  // The raster it measured on the way is narrow_raster's.
+  NarrowRaster raster;
+  largest_narrow_region(points, triangles, 3.0, {}, &raster);
+  const NarrowRaster direct = narrow_raster(points, triangles, 3.0);
+  EXPECT_EQ(raster.inside, direct.inside);
+  EXPECT_EQ(raster.narrow, direct.narrow);
+  EXPECT_EQ(raster.cell, direct.cell);
   // The plate alone: only its corners, each a small region.
   const std::vector<Triangle> plate = {{0, 1, 2}, {0, 2, 3}};
   EXPECT_LT(largest_narrow_region(points, plate, 3.0), 2.0);

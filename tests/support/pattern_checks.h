@@ -239,7 +239,9 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
     ++findings.pieces;
     areas[s] = area;
     findings.smallest_mm2 = std::min(findings.smallest_mm2, area);
-    const double share = narrow_area_fraction(points, triangles, narrow_mm);
+    NarrowRaster raster;
+    const double sliver = largest_narrow_region(points, triangles, narrow_mm, {}, &raster);
+    const double share = raster.fraction();
     findings.most_narrow_share = std::max(findings.most_narrow_share, share);
     const std::string id = strip.at("id").dump();
     if (share > narrow_share) {
@@ -249,7 +251,7 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
         findings.problems.push_back("strip " + id + ": " + std::to_string(int(share * 100)) +
                                     "% narrower than " + std::to_string(narrow_mm) + " mm");
     }
-    if (largest_narrow_region(points, triangles, narrow_mm) > sliver_mm2) {
+    if (sliver > sliver_mm2) {
       ++findings.slivers;
       if (findings.problems.size() < 8)
         findings.problems.push_back("strip " + id + ": a region narrower than " +
