@@ -18,10 +18,17 @@ double piece_shortfall(const Mesh& piece, const PieceLimits& limits) {
     PieceWidthOptions options;
     options.cell_fraction = 0.25;
     options.max_cells = 100'000;
-    const double narrow = narrow_area_fraction(to_triangle_mesh(piece), limits.min_width, options);
+    const TriangleMesh mesh = to_triangle_mesh(piece);
+    const double narrow = narrow_area_fraction(mesh, limits.min_width, options);
     if (narrow > limits.max_narrow_share)
       shortfall =
           std::max(shortfall, (narrow - limits.max_narrow_share) / (1.0 - limits.max_narrow_share));
+    const double width = limits.sliver_width * limits.min_width;
+    if (limits.max_sliver_area > 0.0 && width > 0.0) {
+      const double most = limits.max_sliver_area * width * width;
+      const double sliver = narrow_measure(mesh, width, options).largest_region;
+      if (sliver > most) shortfall = std::max(shortfall, 1.0 - most / sliver);
+    }
   }
   return shortfall;
 }

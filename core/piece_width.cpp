@@ -323,17 +323,33 @@ double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
-double narrow_area_fraction(const TriangleMesh& piece, double width,
-                            const PieceWidthOptions& options) {
+namespace {
+
+// narrow_area_fraction's samples of a 3D piece: each with its share of the area and whether it
+// is narrow; `step` bounds the distance between neighbouring samples of a triangle.
+struct Samples3d {
+  struct Sample {
+    Vec3 point;
+    double area;
+    bool narrow;
+  };
+  std::vector<Sample> samples;
+  double area = 0.0;
+  double step = 0.0;
+};
+
+Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double width,
+                         const PieceWidthOptions& options) {
   if (!(width > 0.0) || !std::isfinite(width))
-    throw InvalidInputException("narrow_area_fraction: width must be positive and finite");
+    throw InvalidInputException(std::string(what) + ": width must be positive and finite");
+  Samples3d out;
   const int count = static_cast<int>(piece.vertices.size());
   std::map<std::pair<int, int>, int> edge_uses;
   double area = 0.0;
   for (const Triangle& t : piece.triangles) {
     for (int k = 0; k < 3; ++k) {
       if (t[k] < 0 || t[k] >= count)
-        throw InvalidInputException("narrow_area_fraction: triangle index " + std::to_string(t[k]) +
+        throw InvalidInputException(std::string(what) + ": triangle index " + std::to_string(t[k]) +
                                     " out of range [0, " + std::to_string(count) + ")");
       const int a = t[k], b = t[(k + 1) % 3];
       ++edge_uses[{std::min(a, b), std::max(a, b)}];
@@ -341,7 +357,8 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
     const Vec3& p = piece.vertices[t[0]];
     area += 0.5 * (piece.vertices[t[1]] - p).cross(piece.vertices[t[2]] - p).norm();
   }
-  if (!(area > 0.0)) return 0.0;
+  out.area = area;
+  if (!(area > 0.0)) return out;
   const double radius = 0.5 * width;
   // Boundary edges, cut into pieces no longer than the radius, in a grid of cells of the
   // radius: every boundary point within the radius of a sample lies in the sample's cell or
@@ -359,27 +376,25 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
       boundary[cell_of(0.5 * (p + q), radius)].emplace_back(p, q);
     }
   }
-  if (!has_boundary) return 0.0;
+  if (!has_boundary) return out;
   // Samples: the centroids of a k x k subdivision of each triangle, k so that they are at
   // most `spacing` apart; each carries its share of the area.
   double spacing = width * options.cell_fraction;
   if (area / (spacing * spacing) > double(options.max_cells))
     spacing = std::sqrt(area / double(options.max_cells));
-  struct Sample {
-    Vec3 point;
-    double area;
-  };
-  std::vector<Sample> samples;
+  std::vector<Samples3d::Sample>& samples = out.samples;
   for (const Triangle& t : piece.triangles) {
     const Vec3 &a = piece.vertices[t[0]], &b = piece.vertices[t[1]], &c = piece.vertices[t[2]];
     const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
     const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
     const double share = 0.5 * (b - a).cross(c - a).norm() / (double(k) * k);
+    out.step = std::max(out.step, longest / k);
     const Vec3 u = (b - a) / k, v = (c - a) / k;
     for (int i = 0; i < k; ++i) {
       for (int j = 0; i + j < k; ++j) {
-        samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share});  // upright
-        if (i + j + 1 < k) samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share});
+        samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share, false});  // upright
+        if (i + j + 1 < k)
+          samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share, false});
       }
     }
   }
@@ -406,19 +421,21 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
         }
     return false;
   };
+  // A sample is wide when a centre lies within the radius and one step: the disc that covers a
+  // point on the boundary is centred exactly one radius in, where a sample lies only to within
+  // a step; without the step, a line of samples along every boundary edge would read narrow.
+  const double reach = radius + out.step;
   std::unordered_map<Cell, std::vector<Vec3>, CellHash> centres;
   std::vector<char> is_centre(samples.size(), 0);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     if (near_boundary(samples[i].point)) continue;
     is_centre[i] = 1;
-    centres[cell_of(samples[i].point, radius)].push_back(samples[i].point);
+    centres[cell_of(samples[i].point, reach)].push_back(samples[i].point);
   }
-  if (centres.empty()) return 1.0;
-  double narrow = 0.0;
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    const Sample& s = samples[i];
+    Samples3d::Sample& s = samples[i];
     if (is_centre[i]) continue;  // a centre covers itself
-    const Cell c = cell_of(s.point, radius);
+    const Cell c = cell_of(s.point, reach);
     bool covered = false;
     for (std::int64_t dx = -1; dx <= 1 && !covered; ++dx)
       for (std::int64_t dy = -1; dy <= 1 && !covered; ++dy)
@@ -426,14 +443,75 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
           const auto it = centres.find({c[0] + dx, c[1] + dy, c[2] + dz});
           if (it == centres.end()) continue;
           for (const Vec3& centre : it->second)
-            if ((centre - s.point).squaredNorm() <= radius * radius) {
+            if ((centre - s.point).squaredNorm() <= reach * reach) {
               covered = true;
               break;
             }
         }
-    if (!covered) narrow += s.area;
+    s.narrow = !covered;
   }
-  return std::min(1.0, narrow / area);
+  return out;
+}
+
+}  // namespace
+
+double narrow_area_fraction(const TriangleMesh& piece, double width,
+                            const PieceWidthOptions& options) {
+  const Samples3d measured = narrow_samples("narrow_area_fraction", piece, width, options);
+  if (!(measured.area > 0.0)) return 0.0;
+  double narrow = 0.0;
+  for (const Samples3d::Sample& s : measured.samples)
+    if (s.narrow) narrow += s.area;
+  return std::min(1.0, narrow / measured.area);
+}
+
+NarrowMeasure narrow_measure(const TriangleMesh& piece, double width,
+                             const PieceWidthOptions& options) {
+  const Samples3d measured = narrow_samples("narrow_measure", piece, width, options);
+  NarrowMeasure result;
+  if (!(measured.area > 0.0)) return result;
+  // Narrow samples joined when closer than 1.5 steps (neighbours on one triangle or across a
+  // shared edge), by union-find over a grid of cells of that size.
+  std::vector<int> narrow;
+  for (std::size_t i = 0; i < measured.samples.size(); ++i)
+    if (measured.samples[i].narrow) narrow.push_back(static_cast<int>(i));
+  if (narrow.empty()) return result;
+  const double link = 1.5 * measured.step;
+  std::unordered_map<Cell, std::vector<int>, CellHash> grid;
+  for (int n = 0; n < static_cast<int>(narrow.size()); ++n)
+    grid[cell_of(measured.samples[narrow[n]].point, link)].push_back(n);
+  std::vector<int> parent(narrow.size());
+  for (std::size_t n = 0; n < parent.size(); ++n) parent[n] = static_cast<int>(n);
+  auto root = [&](int n) {
+    while (parent[n] != n) n = parent[n] = parent[parent[n]];
+    return n;
+  };
+  for (int n = 0; n < static_cast<int>(narrow.size()); ++n) {
+    const Vec3& p = measured.samples[narrow[n]].point;
+    const Cell c = cell_of(p, link);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == grid.end()) continue;
+          for (int m : it->second) {
+            if (m >= n || (measured.samples[narrow[m]].point - p).squaredNorm() > link * link)
+              continue;
+            const int a = root(n), b = root(m);
+            if (a != b) parent[a] = b;
+          }
+        }
+  }
+  std::vector<double> region(narrow.size(), 0.0);
+  double total = 0.0;
+  for (int n = 0; n < static_cast<int>(narrow.size()); ++n) {
+    const double a = measured.samples[narrow[n]].area;
+    region[root(n)] += a;
+    total += a;
+  }
+  result.fraction = std::min(1.0, total / measured.area);
+  result.largest_region = *std::max_element(region.begin(), region.end());
+  return result;
 }
 
 }  // namespace papercraft

@@ -82,4 +82,19 @@ double largest_narrow_region(const std::vector<Vec2>& points,
 double narrow_area_fraction(const TriangleMesh& piece, double width,
                             const PieceWidthOptions& options = {});
 
+/// narrow_area_fraction of a 3D piece, with its narrow samples split into connected regions
+/// (samples closer than 1.5 times their spacing are joined): `largest_region` is the area of the
+/// largest, in the vertices' units squared. A tip (a cone's apex, a corner where cuts meet) is a
+/// small region, a thin tail along a wide strip a long one, whatever its share of the piece.
+/// Samples of two sheets of the piece that pass closer than their spacing join too, so a region
+/// reads at least as large as along the surface.
+struct NarrowMeasure {
+  double fraction = 0.0;        // == narrow_area_fraction(piece, width, options)
+  double largest_region = 0.0;  // 0 without narrow samples
+};
+
+/// \throws InvalidInputException as narrow_area_fraction.
+NarrowMeasure narrow_measure(const TriangleMesh& piece, double width,
+                             const PieceWidthOptions& options = {});
+
 }  // namespace papercraft

@@ -79,6 +79,59 @@ TEST(PieceWidth, LargestNarrowRegionIsOneSliverNotTheirSum) {
   EXPECT_NEAR(largest_narrow_region(band, band_triangles, 3.0), 300.0, 20.0);  // to a row of cells
 }
 
+TEST(PieceWidth, NarrowMeasureIn3dFindsTheSliverAlongABentPiece) {
+  // The plate with its two teeth of LargestNarrowRegionIsOneSliverNotTheirSum, the teeth folded
+  // up by 60 degrees about the plate's edge: the same share and the same largest region (the
+  // 1.5 x 30 tooth), measured in 3D.
+  const std::vector<Vec2> flat = {{0, 0},     {100, 0}, {100, 20}, {0, 20},  {20, 20}, {21.5, 20},
+                                  {21.5, 50}, {20, 50}, {60, 20},  {61, 20}, {61, 40}, {60, 40}};
+  TriangleMesh piece;
+  for (const Vec2& p : flat) {
+    const double up = std::max(0.0, p.y() - 20.0);
+    piece.vertices.push_back(
+        {p.x(), std::min(p.y(), 20.0) + up * std::cos(M_PI / 3), up * std::sin(M_PI / 3)});
+  }
+  piece.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}, {8, 9, 10}, {8, 10, 11}};
+  const NarrowMeasure measure = narrow_measure(piece, 3.0);
+  EXPECT_EQ(measure.fraction, narrow_area_fraction(piece, 3.0));
+  EXPECT_NEAR(measure.fraction, narrow_area_fraction(flat, piece.triangles, 3.0), 0.01);
+  EXPECT_GT(measure.largest_region, 40.0);
+  EXPECT_LT(measure.largest_region, 52.0);
+  // The plate alone: its corners; a tip, not a sliver.
+  TriangleMesh plate = piece;
+  plate.triangles.resize(2);
+  EXPECT_GT(narrow_measure(plate, 3.0).largest_region, 0.0);
+  EXPECT_LT(narrow_measure(plate, 3.0).largest_region, 2.0);
+  // A band narrower than the disc, bent into a half cylinder of radius 20 along its length:
+  // one region, the whole band.
+  TriangleMesh band;
+  const int steps = 40;
+  for (int i = 0; i <= steps; ++i) {
+    const double angle = M_PI * i / steps;
+    band.vertices.push_back({20 * std::cos(angle), 20 * std::sin(angle), 0.0});
+    band.vertices.push_back({20 * std::cos(angle), 20 * std::sin(angle), 2.0});
+  }
+  for (int i = 0; i < steps; ++i)
+    band.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3}),
+        band.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
+  double area = 0.0;
+  for (const Triangle& t : band.triangles)
+    area += 0.5 * (band.vertices[t[1]] - band.vertices[t[0]])
+                      .cross(band.vertices[t[2]] - band.vertices[t[0]])
+                      .norm();
+  const NarrowMeasure whole = narrow_measure(band, 3.0);
+  EXPECT_EQ(whole.fraction, 1.0);
+  EXPECT_NEAR(whole.largest_region, area, 1e-9 * area);
+  // Cut in two halves apart from each other (the middle rungs left out): two regions of half.
+  TriangleMesh halves = band;
+  halves.triangles.erase(halves.triangles.begin() + steps - 4,
+                         halves.triangles.begin() + steps + 4);
+  EXPECT_LT(narrow_measure(halves, 3.0).largest_region, 0.51 * area);
+  // A closed piece has no boundary, so nothing narrow.
+  EXPECT_EQ(narrow_measure(TriangleMesh{}, 3.0).largest_region, 0.0);
+  EXPECT_THROW(narrow_measure(piece, -1.0), InvalidInputException);
+}
+
 TEST(PieceWidth, OrientationAndOverlapDoNotMatter) {
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;
