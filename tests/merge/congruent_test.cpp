@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "core/flat_boundary.h"
 #include "core/piece_width.h"
 #include "nlohmann/json.hpp"
 #include "nodes/unfold/sequential.h"
@@ -780,6 +781,58 @@ TEST(JoinNarrowStrips, TwoBandsAreNotJoinedIntoOneAsNarrow) {
   strips = merge_congruent(strips);
   ASSERT_EQ(strips.size(), 2u);
   EXPECT_EQ(join_narrow_strips(strips, 0.5, 0.25).size(), 2u);
+}
+
+// A flat strip made by hand: 3D points in the plane z = 0 at its flat points, but where
+// `flat_offset` moves one flat point off (the 3D point stays).
+FlatStrip hand_strip(int id, const std::vector<Vec2>& points,
+                     const std::vector<Triangle>& triangles, int moved = -1,
+                     const Vec2& flat_offset = Vec2::Zero()) {
+  FlatStrip strip;
+  strip.id = id;
+  strip.source_strip = id;
+  for (std::size_t v = 0; v < points.size(); ++v) {
+    strip.vertices3d.push_back({points[v].x(), points[v].y(), 0.0});
+    strip.vertices2d.push_back(static_cast<int>(v) == moved ? Vec2(points[v] + flat_offset)
+                                                            : points[v]);
+  }
+  strip.triangles = triangles;
+  strip.boundary = flat_boundary(triangles);
+  return strip;
+}
+
+// Welding snaps a neighbour's seam points onto the strip's, which the rigid fit leaves up to
+// congruence_tolerance of the seam's length apart. An edge 1e-4 long beside the seam would
+// take that whole, and its two sides would differ: such a union is refused. Without the
+// offset the same two strips merge.
+TEST(MergeCongruent, WeldThatWouldStretchAShortEdgeIsRefused) {
+  // X: a 2 x 1 rectangle. Y: above it, with an edge 1e-4 long up from the middle of the seam.
+  const std::vector<Vec2> x = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {0, 1}};
+  const std::vector<Vec2> y = {{0, 1}, {1, 1}, {2, 1}, {1, 1.0001}, {0, 2}, {2, 2}};
+  const std::vector<Triangle> x_triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}};
+  const std::vector<Triangle> y_triangles = {{0, 1, 3}, {1, 2, 3}, {0, 3, 4}, {3, 2, 5}, {3, 5, 4}};
+  std::vector<FlatStrip> exact = {hand_strip(0, x, x_triangles), hand_strip(1, y, y_triangles)};
+  ASSERT_EQ(merge_congruent(exact).size(), 1u);
+  // X's seam point (1, 1) 4e-12 off on paper, along the short edge: no rigid motion fits it,
+  // but it is within the congruence tolerance of the seam. Whichever strip the merge keeps in
+  // place, the short edge keeps its length: the union is made only where it does.
+  for (const bool y_first : {false, true}) {
+    std::vector<FlatStrip> off = {hand_strip(0, x, x_triangles, 3, Vec2(0.0, 4e-12)),
+                                  hand_strip(1, y, y_triangles)};
+    if (y_first) std::swap(off[0], off[1]);
+    int short_edges = 0;
+    for (const FlatStrip& s : merge_congruent(off))
+      for (const Triangle& t : s.triangles)
+        for (int k = 0; k < 3; ++k) {
+          const int a = t[k], b = t[(k + 1) % 3];
+          const double length3 = (s.vertices3d[a] - s.vertices3d[b]).norm();
+          if (length3 > 1e-3) continue;  // the short edge only (X's own are off by 4e-12)
+          ++short_edges;
+          EXPECT_LE(std::abs((s.vertices2d[a] - s.vertices2d[b]).norm() - length3), 1e-10 * length3)
+              << (y_first ? "Y first" : "X first");
+        }
+    EXPECT_EQ(short_edges, 2);  // in both of Y's triangles
+  }
 }
 
 TEST(MergeCongruent, BadInputThrows) {

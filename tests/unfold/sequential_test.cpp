@@ -268,6 +268,35 @@ TEST(UnfoldSequential, FlatCapClosesWithoutASlit) {
   EXPECT_EQ(cone[0].boundary.size(), static_cast<std::size_t>(n + 2));
 }
 
+// A cap that is flat but for a cone's worth of 1e-11 at its apex, with a rim edge 1e-4 long
+// beside the ruling it opens along: the two copies of that ruling land within the weld's reach,
+// but welding them would stretch that short edge by a part in 1e7. Every edge keeps its 3D
+// length (to 1e-10 of it), so a seam along it is the same length on both sides.
+TEST(UnfoldSequential, NearlyFlatCapIsWeldedOnlyWhereEveryEdgeKeepsItsLength) {
+  const int n = 24;
+  std::vector<Vec3> rim;
+  for (int i = 0; i < n; ++i) {
+    rim.push_back(unfold_testing::circle_point(1.0, i, n, 0.0));
+    // Beside the rim point nearest the apex (at 300 degrees), where the shortest ruling ends.
+    if (i == 20) rim.push_back({std::cos(5 * M_PI / 3 + 1e-4), std::sin(5 * M_PI / 3 + 1e-4), 0.0});
+  }
+  const double height = std::sqrt(1e-11 / M_PI);  // a full turn less about 1e-11 at the apex
+  const auto flat =
+      unfold_strip(unfold_testing::fan_strip(rim, Vec3(0.1, -0.2, height), true), 0, 0);
+  std::size_t triangles = 0;
+  for (const FlatStrip& s : flat) {
+    triangles += s.triangles.size();
+    for (const Triangle& t : s.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        const double length3 = (s.vertices3d[a] - s.vertices3d[b]).norm();
+        const double length2 = (s.vertices2d[a] - s.vertices2d[b]).norm();
+        EXPECT_LE(std::abs(length2 - length3), 1e-10 * length3) << a << "-" << b;
+      }
+  }
+  EXPECT_EQ(triangles, rim.size());
+}
+
 TEST(UnfoldSequential, BadInputThrows) {
   RuledStrip strip = ring_strip(1.0, 0.0, 1.0, 1.0, 8);
   RuledStrip bad_index = strip;
