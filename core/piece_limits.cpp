@@ -9,10 +9,8 @@ namespace papercraft {
 double piece_shortfall(const Mesh& piece, const PieceLimits& limits) {
   if (!limits.active()) return 0.0;
   double shortfall = 0.0;
-  if (limits.min_area > 0.0) {
-    const double area = surface_area(piece);
-    if (area < limits.min_area) shortfall = 1.0 - area / limits.min_area;
-  }
+  const double area = surface_area(piece);
+  if (limits.min_area > 0.0 && area < limits.min_area) shortfall = 1.0 - area / limits.min_area;
   if (limits.min_width > 0.0) {
     // A coarse raster: the judgement is about tips against bands, not the last percent.
     PieceWidthOptions options;
@@ -24,8 +22,11 @@ double piece_shortfall(const Mesh& piece, const PieceLimits& limits) {
       shortfall =
           std::max(shortfall, (narrow - limits.max_narrow_share) / (1.0 - limits.max_narrow_share));
     const double width = limits.sliver_width * limits.min_width;
-    if (limits.max_sliver_area > 0.0 && width > 0.0) {
-      const double most = limits.max_sliver_area * width * width;
+    const double most = limits.max_sliver_area * width * width;
+    // What is narrower than sliver_width is narrower than min_width too (a smaller disc fits
+    // wherever a larger one does): a piece narrow at min_width over less than the bound has
+    // no sliver to look for, and most pieces are that.
+    if (most > 0.0 && narrow * area > most) {
       const double sliver = narrow_measure(mesh, width, options).largest_region;
       if (sliver > most) shortfall = std::max(shortfall, 1.0 - most / sliver);
     }

@@ -477,29 +477,42 @@ NarrowMeasure narrow_measure(const TriangleMesh& piece, double width,
     if (measured.samples[i].narrow) narrow.push_back(static_cast<int>(i));
   if (narrow.empty()) return result;
   const double link = 1.5 * measured.step;
+  // Cells small enough that any two samples in one lie within the link of each other (their
+  // diagonal is the link): a cell's samples are one region at once, and two cells, up to two
+  // apart, are joined by the first pair of their samples within the link. A thin triangle
+  // holds many samples close together (k x k of them, k set by its longest edge), which
+  // pair by pair would cost their square.
+  const double size = link / std::sqrt(3.0);
   std::unordered_map<Cell, std::vector<int>, CellHash> grid;
   for (int n = 0; n < static_cast<int>(narrow.size()); ++n)
-    grid[cell_of(measured.samples[narrow[n]].point, link)].push_back(n);
+    grid[cell_of(measured.samples[narrow[n]].point, size)].push_back(n);
   std::vector<int> parent(narrow.size());
   for (std::size_t n = 0; n < parent.size(); ++n) parent[n] = static_cast<int>(n);
   auto root = [&](int n) {
     while (parent[n] != n) n = parent[n] = parent[parent[n]];
     return n;
   };
-  for (int n = 0; n < static_cast<int>(narrow.size()); ++n) {
-    const Vec3& p = measured.samples[narrow[n]].point;
-    const Cell c = cell_of(p, link);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == grid.end()) continue;
-          for (int m : it->second) {
-            if (m >= n || (measured.samples[narrow[m]].point - p).squaredNorm() > link * link)
-              continue;
-            const int a = root(n), b = root(m);
-            if (a != b) parent[a] = b;
+  for (const auto& [cell, members] : grid)
+    for (int m : members) parent[root(m)] = root(members.front());
+  for (const auto& [cell, members] : grid) {
+    for (std::int64_t dx = -2; dx <= 2; ++dx)
+      for (std::int64_t dy = -2; dy <= 2; ++dy)
+        for (std::int64_t dz = -2; dz <= 2; ++dz) {
+          const Cell other{cell[0] + dx, cell[1] + dy, cell[2] + dz};
+          if (!(cell < other)) continue;  // each pair of cells once
+          const auto it = grid.find(other);
+          if (it == grid.end() || root(it->second.front()) == root(members.front())) continue;
+          bool joined = false;
+          for (int n : members) {
+            const Vec3& p = measured.samples[narrow[n]].point;
+            for (int m : it->second)
+              if ((measured.samples[narrow[m]].point - p).squaredNorm() <= link * link) {
+                joined = true;
+                break;
+              }
+            if (joined) break;
           }
+          if (joined) parent[root(it->second.front())] = root(members.front());
         }
   }
   std::vector<double> region(narrow.size(), 0.0);
