@@ -61,6 +61,24 @@ std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles) 
   return result;
 }
 
+bool weld_keeps_lengths(const std::vector<Vec3>& points3d, const std::vector<Triangle>& triangles,
+                        const std::vector<Vec2>& before, const std::vector<Vec2>& after) {
+  for (const Triangle& t : triangles) {
+    if (before[t[0]] == after[t[0]] && before[t[1]] == after[t[1]] && before[t[2]] == after[t[2]])
+      continue;
+    if (after[t[0]] == after[t[1]] || after[t[1]] == after[t[2]] || after[t[2]] == after[t[0]])
+      continue;  // a triangle the weld drops
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const double length3 = (points3d[a] - points3d[b]).norm();
+      const double was = std::abs((before[a] - before[b]).norm() - length3);
+      const double is = std::abs((after[a] - after[b]).norm() - length3);
+      if (is > std::max(was, kWeldLengthTolerance * length3)) return false;
+    }
+  }
+  return true;
+}
+
 double flat_area(const FlatStrip& strip) {
   double area = 0.0;
   for (const Triangle& t : strip.triangles) {

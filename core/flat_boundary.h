@@ -18,6 +18,19 @@ namespace papercraft {
 /// the loop follows the first unused edge, so such a loop may be split differently.
 std::vector<BoundaryEdge> flat_boundary(const std::vector<Triangle>& triangles);
 
+/// The most a weld (points that lie together on paper snapped into one) may move a flat edge
+/// off its 3D length, as a share of it: a seam's two sides are checked equal to 1e-9.
+inline constexpr double kWeldLengthTolerance = 1e-10;
+
+/// Whether moving a flat strip's points from `before` to `after` (both indexed like
+/// `points3d`) keeps every edge of each triangle that moves at its 3D length, to
+/// kWeldLengthTolerance of it (or as close as it was before). A weld snaps points that lie
+/// within rounding of each other, and the gap between them goes into the edges beside them:
+/// on a short edge that is more than a seam's sides may differ by. Triangles that `after`
+/// leaves with two corners on one point (the weld drops them) are not asked.
+bool weld_keeps_lengths(const std::vector<Vec3>& points3d, const std::vector<Triangle>& triangles,
+                        const std::vector<Vec2>& before, const std::vector<Vec2>& after);
+
 /// The area of a flat strip's triangles in the plane (each counted by its absolute value).
 double flat_area(const FlatStrip& strip);
 

@@ -206,30 +206,6 @@ double mean_edge_length(const FlatStrip& strip) {
   return strip.triangles.empty() ? 0.0 : sum / (3.0 * strip.triangles.size());
 }
 
-// A weld may change a flat edge's length by at most this share of its 3D length: a seam's two
-// sides are checked equal to 1e-9 of their length.
-constexpr double kExactLength = 1e-10;
-
-// Whether welding Y's vertices (at `moved`) onto X's (weld[v] >= 0: at welded[weld[v]]) keeps
-// every edge of Y's triangles at its 3D length, to kExactLength of it (or as close as it was):
-// the fit leaves up to congruence_tolerance of the chain's length between the two, which a
-// short edge beside the seam would take whole.
-bool weld_keeps_lengths(const FlatStrip& y, const std::vector<Vec2>& moved,
-                        const std::vector<int>& weld, const std::vector<Vec2>& welded) {
-  auto at = [&](int v) -> const Vec2& { return weld[v] >= 0 ? welded[weld[v]] : moved[v]; };
-  for (const Triangle& t : y.triangles) {
-    if (weld[t[0]] < 0 && weld[t[1]] < 0 && weld[t[2]] < 0) continue;
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      const double length3 = (y.vertices3d[a] - y.vertices3d[b]).norm();
-      const double before = std::abs((moved[a] - moved[b]).norm() - length3);
-      const double after = std::abs((at(a) - at(b)).norm() - length3);
-      if (after > std::max(before, kExactLength * length3)) return false;
-    }
-  }
-  return true;
-}
-
 // No directed edge is used by two triangles.
 bool consistently_oriented(const std::vector<Triangle>& triangles) {
   std::vector<std::pair<int, int>> directed;
@@ -315,7 +291,12 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
     }
     for (const Triangle& t : y.triangles)
       merged.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
-    if (!weld_keeps_lengths(y, moved, weld, merged.vertices2d)) continue;
+    // The fit leaves up to congruence_tolerance of the chain's length between Y's seam points
+    // and X's, which a short edge beside the seam would take whole.
+    std::vector<Vec2> welded = moved;
+    for (std::size_t v = 0; v < welded.size(); ++v)
+      if (weld[v] >= 0) welded[v] = x.vertices2d[weld[v]];
+    if (!weld_keeps_lengths(y.vertices3d, y.triangles, moved, welded)) continue;
     // Welding must keep the strip a consistently oriented manifold: a directed edge used by
     // two triangles means the chains were glued the wrong way round somewhere; and welding
     // snaps y's seam vertices onto x's, so a thin triangle next to the seam must not flip.

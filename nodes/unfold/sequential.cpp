@@ -19,9 +19,6 @@ namespace {
 
 // Two copies of one 3D point lie together on paper when within this times the mean edge.
 constexpr double kRepeatedPointReach = 1e-6;
-// A weld may change a flat edge's length by at most this share of its 3D length: a seam's two
-// sides are checked equal to 1e-9 of their length.
-constexpr double kExactLength = 1e-10;
 
 struct FlatBuilder {
   FlatStrip flat;
@@ -195,27 +192,13 @@ std::vector<std::vector<int>> balanced_runs(const RuledStrip& strip,
   return result;
 }
 
-// Whether moving each vertex v of `flat` onto remap[v] keeps every edge of a triangle it
-// moves at its 3D length, to kExactLength of it (or as close as it was): a strip that lies
-// flat but for rounding (a cap whose apex is a hair off its plane) closes with a gap that a
-// weld would pour into the edges beside it, and on a short edge that is more than a seam's
-// two sides may differ by. Triangles the weld leaves without area (it drops them) are not
-// asked.
-bool weld_keeps_lengths(const FlatStrip& flat, const std::vector<int>& remap) {
-  for (const Triangle& t : flat.triangles) {
-    if (remap[t[0]] == t[0] && remap[t[1]] == t[1] && remap[t[2]] == t[2]) continue;
-    const int a0 = remap[t[0]], a1 = remap[t[1]], a2 = remap[t[2]];
-    if (a0 == a1 || a1 == a2 || a2 == a0) continue;  // a triangle the weld drops
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      const double length3 = (flat.vertices3d[a] - flat.vertices3d[b]).norm();
-      const double before = std::abs((flat.vertices2d[a] - flat.vertices2d[b]).norm() - length3);
-      const double after =
-          std::abs((flat.vertices2d[remap[a]] - flat.vertices2d[remap[b]]).norm() - length3);
-      if (after > std::max(before, kExactLength * length3)) return false;
-    }
-  }
-  return true;
+// Whether snapping each point v of `flat` onto remap[v] keeps its edges' lengths
+// (weld_keeps_lengths): a strip that lies flat but for rounding (a cap whose apex is a hair
+// off its plane) closes with a gap a weld would pour into the edges beside it.
+bool remap_keeps_lengths(const FlatStrip& flat, const std::vector<int>& remap) {
+  std::vector<Vec2> after(remap.size());
+  for (std::size_t v = 0; v < remap.size(); ++v) after[v] = flat.vertices2d[remap[v]];
+  return weld_keeps_lengths(flat.vertices3d, flat.triangles, flat.vertices2d, after);
 }
 
 // Where both copies of each end of the opened ruling (3D points p and q) lie within `reach` of
@@ -235,7 +218,7 @@ void weld_flat_ruling(FlatStrip& flat, const Vec3& p, const Vec3& q, double reac
   bool welds = false;
   for (std::size_t v = 0; v < remap.size(); ++v) welds = welds || remap[v] != static_cast<int>(v);
   if (!welds) return;
-  if (!weld_keeps_lengths(flat, remap)) return;
+  if (!remap_keeps_lengths(flat, remap)) return;
   std::vector<int> index(remap.size(), -1);
   FlatStrip welded;
   for (std::size_t v = 0; v < remap.size(); ++v) {
@@ -273,7 +256,7 @@ void weld_repeated_points(FlatStrip& flat, double reach) {
   if (!any) return;
   std::vector<int> remap(flat.vertices3d.size());
   for (std::size_t v = 0; v < remap.size(); ++v) remap[v] = static_cast<int>(same.find(v));
-  if (!weld_keeps_lengths(flat, remap)) return;
+  if (!remap_keeps_lengths(flat, remap)) return;
   std::vector<int> index(flat.vertices3d.size(), -1);
   FlatStrip welded;
   welded.id = flat.id;
