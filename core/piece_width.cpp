@@ -378,16 +378,44 @@ Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double wid
   }
   if (!has_boundary) return out;
   // Samples: the centroids of a k x k subdivision of each triangle, k so that they are at
-  // most `spacing` apart; each carries its share of the area.
+  // most `spacing` apart; each carries its share of the area. A thin triangle (its longest
+  // edge over four times its height) is sampled in rows along that edge instead, each row
+  // `spacing` apart at most and its samples too: k x k samples, k set by the longest edge,
+  // would crowd its small area (a 20 x 0.25 needle of a CAD mesh would take 54 x 54 of them).
   double spacing = width * options.cell_fraction;
   if (area / (spacing * spacing) > double(options.max_cells))
     spacing = std::sqrt(area / double(options.max_cells));
   std::vector<Samples3d::Sample>& samples = out.samples;
   for (const Triangle& t : piece.triangles) {
-    const Vec3 &a = piece.vertices[t[0]], &b = piece.vertices[t[1]], &c = piece.vertices[t[2]];
-    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
+                                        piece.vertices[t[2]]};
+    const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
+    // Edge e runs from corner e to corner e + 1.
+    const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
+    const int e = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    const double longest = length[e];
+    const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
+    const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
+    if (longest > spacing && longest > 4.0 * height) {
+      const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
+      const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
+      out.step = std::max(out.step, height / rows);
+      for (int j = 0; j < rows; ++j) {
+        // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
+        // middle: from p towards r and from q towards r by that share.
+        const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
+        const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
+        const Vec3 start = p + at * (r - p), end = q + at * (r - q);
+        const int count =
+            std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
+        out.step = std::max(out.step, (end - start).norm() / count);
+        for (int i = 0; i < count; ++i)
+          samples.push_back({start + ((i + 0.5) / count) * (end - start), band / count, false});
+      }
+      continue;
+    }
     const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
-    const double share = 0.5 * (b - a).cross(c - a).norm() / (double(k) * k);
+    const double share = triangle_area / (double(k) * k);
     out.step = std::max(out.step, longest / k);
     const Vec3 u = (b - a) / k, v = (c - a) / k;
     for (int i = 0; i < k; ++i) {
@@ -398,57 +426,67 @@ Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double wid
       }
     }
   }
-  // Per cell: whether any of its 27 cells holds boundary (most cells of a wide piece do not,
-  // and then no sample in them is near the boundary).
-  std::unordered_map<Cell, bool, CellHash> boundary_around;
-  auto near_boundary = [&](const Vec3& p) {
-    const Cell c = cell_of(p, radius);
-    auto [around, added] = boundary_around.try_emplace(c, false);
-    if (added) {
-      for (std::int64_t dx = -1; dx <= 1 && !around->second; ++dx)
-        for (std::int64_t dy = -1; dy <= 1 && !around->second; ++dy)
-          for (std::int64_t dz = -1; dz <= 1 && !around->second; ++dz)
-            around->second = boundary.count({c[0] + dx, c[1] + dy, c[2] + dz}) > 0;
-    }
-    if (!around->second) return false;
+  // Samples are taken cell by cell: a cell's samples share the 27 cells around it, looked up
+  // once for all of them (a thin triangle puts many samples into one cell).
+  auto by_cell = [&](double size, auto&& take) {
+    std::unordered_map<Cell, std::vector<int>, CellHash> cells;
+    for (int i = 0; i < static_cast<int>(samples.size()); ++i)
+      if (take(i)) cells[cell_of(samples[i].point, size)].push_back(i);
+    return cells;
+  };
+  // A sample is a centre when no boundary point lies within the radius of it.
+  std::vector<char> is_centre(samples.size(), 0);
+  std::vector<const std::vector<std::pair<Vec3, Vec3>>*> segments;
+  for (const auto& [c, members] : by_cell(radius, [](int) { return true; })) {
+    segments.clear();
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy)
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
           const auto it = boundary.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == boundary.end()) continue;
-          for (const auto& [a, b] : it->second)
-            if (segment_distance(p, a, b) < radius) return true;
+          if (it != boundary.end()) segments.push_back(&it->second);
         }
-    return false;
-  };
+    for (int i : members) {
+      bool near = false;
+      for (const auto* list : segments) {
+        for (const auto& [a, b] : *list)
+          if (segment_distance(samples[i].point, a, b) < radius) {
+            near = true;
+            break;
+          }
+        if (near) break;
+      }
+      is_centre[i] = !near;
+    }
+  }
   // A sample is wide when a centre lies within the radius and one step: the disc that covers a
   // point on the boundary is centred exactly one radius in, where a sample lies only to within
   // a step; without the step, a line of samples along every boundary edge would read narrow.
   const double reach = radius + out.step;
   std::unordered_map<Cell, std::vector<Vec3>, CellHash> centres;
-  std::vector<char> is_centre(samples.size(), 0);
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (near_boundary(samples[i].point)) continue;
-    is_centre[i] = 1;
-    centres[cell_of(samples[i].point, reach)].push_back(samples[i].point);
-  }
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    Samples3d::Sample& s = samples[i];
-    if (is_centre[i]) continue;  // a centre covers itself
-    const Cell c = cell_of(s.point, reach);
-    bool covered = false;
-    for (std::int64_t dx = -1; dx <= 1 && !covered; ++dx)
-      for (std::int64_t dy = -1; dy <= 1 && !covered; ++dy)
-        for (std::int64_t dz = -1; dz <= 1 && !covered; ++dz) {
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    if (is_centre[i]) centres[cell_of(samples[i].point, reach)].push_back(samples[i].point);
+  std::vector<const std::vector<Vec3>*> around;
+  for (const auto& [c, members] : by_cell(reach, [&](int i) { return !is_centre[i]; })) {
+    around.clear();
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
           const auto it = centres.find({c[0] + dx, c[1] + dy, c[2] + dz});
-          if (it == centres.end()) continue;
-          for (const Vec3& centre : it->second)
-            if ((centre - s.point).squaredNorm() <= reach * reach) {
-              covered = true;
-              break;
-            }
+          if (it != centres.end()) around.push_back(&it->second);
         }
-    s.narrow = !covered;
+    for (int i : members) {  // a centre covers itself
+      Samples3d::Sample& s = samples[i];
+      bool covered = false;
+      for (const auto* list : around) {
+        for (const Vec3& centre : *list)
+          if ((centre - s.point).squaredNorm() <= reach * reach) {
+            covered = true;
+            break;
+          }
+        if (covered) break;
+      }
+      s.narrow = !covered;
+    }
   }
   return out;
 }
@@ -469,6 +507,7 @@ NarrowMeasure narrow_measure(const TriangleMesh& piece, double width,
                              const PieceWidthOptions& options) {
   const Samples3d measured = narrow_samples("narrow_measure", piece, width, options);
   NarrowMeasure result;
+  result.samples = measured.samples.size();
   if (!(measured.area > 0.0)) return result;
   // Narrow samples joined when closer than 1.5 steps (neighbours on one triangle or across a
   // shared edge), by union-find over a grid of cells of that size.
@@ -480,8 +519,7 @@ NarrowMeasure narrow_measure(const TriangleMesh& piece, double width,
   // Cells small enough that any two samples in one lie within the link of each other (their
   // diagonal is the link): a cell's samples are one region at once, and two cells, up to two
   // apart, are joined by the first pair of their samples within the link. A thin triangle
-  // holds many samples close together (k x k of them, k set by its longest edge), which
-  // pair by pair would cost their square.
+  // holds samples close together, which pair by pair would cost their square.
   const double size = link / std::sqrt(3.0);
   std::unordered_map<Cell, std::vector<int>, CellHash> grid;
   for (int n = 0; n < static_cast<int>(narrow.size()); ++n)

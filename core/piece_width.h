@@ -4,6 +4,7 @@
 // 2 mm wide is narrow everywhere at 3 mm; a wide piece is narrow only in its sharp corners
 // and at the tips of a cone, which cover little area.
 
+#include <cstddef>
 #include <vector>
 
 #include "core/triangle_mesh.h"
@@ -91,6 +92,9 @@ double narrow_area_fraction(const TriangleMesh& piece, double width,
 struct NarrowMeasure {
   double fraction = 0.0;        // == narrow_area_fraction(piece, width, options)
   double largest_region = 0.0;  // 0 without narrow samples
+  /// Points measured: about the area over the spacing squared, thin triangles included (one
+  /// is sampled in rows along its longest edge).
+  std::size_t samples = 0;
 };
 
 /// \throws InvalidInputException as narrow_area_fraction.

@@ -132,6 +132,46 @@ TEST(PieceWidth, NarrowMeasureIn3dFindsTheSliverAlongABentPiece) {
   EXPECT_THROW(narrow_measure(piece, -1.0), InvalidInputException);
 }
 
+TEST(PieceWidth, NeedleTrianglesMeasureLikeTheirShapeWithSamplesForTheirArea) {
+  // A 100 x 20 plate with a 1.5 x 30 tooth on its top edge, bent up by 60 degrees, meshed twice:
+  // once in near-square cells, once in needles (the plate in triangles 20 long and 0.25 wide,
+  // as a CAD mesh has them). Both measure the same, and the needles take about as many samples
+  // as the squares do, not k x k each with k set by their 20-long side.
+  auto mesh = [](double dx, double dy) {
+    TriangleMesh piece;
+    auto grid = [&](double x0, double w, double h, double cell_x, double cell_y, bool bent) {
+      const int nx = static_cast<int>(std::lround(w / cell_x)),
+                ny = static_cast<int>(std::lround(h / cell_y));
+      const int first = static_cast<int>(piece.vertices.size());
+      for (int j = 0; j <= ny; ++j)
+        for (int i = 0; i <= nx; ++i) {
+          const double x = x0 + w * i / nx, y = h * j / ny;
+          piece.vertices.push_back(
+              bent ? Vec3{x, 20.0 + y * std::cos(M_PI / 3), y * std::sin(M_PI / 3)}
+                   : Vec3{x, y, 0.0});
+        }
+      auto at = [&](int i, int j) { return first + j * (nx + 1) + i; };
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+          piece.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+          piece.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    };
+    grid(0.0, 100.0, 20.0, dx, dy, false);
+    grid(20.0, 1.5, 30.0, 1.5, 30.0, true);  // the tooth: two triangles 30 long, 1.5 wide
+    return piece;
+  };
+  const TriangleMesh squares = mesh(1.0, 1.0), needles = mesh(0.25, 20.0);
+  const NarrowMeasure square = narrow_measure(squares, 3.0), needle = narrow_measure(needles, 3.0);
+  EXPECT_NEAR(needle.fraction, square.fraction, 0.005);
+  EXPECT_NEAR(needle.largest_region, square.largest_region, 0.05 * square.largest_region);
+  EXPECT_GT(square.largest_region, 40.0);  // the tooth
+  EXPECT_LT(square.largest_region, 52.0);
+  // The spacing is 3 / 8: each square's two triangles take 4 x 4 samples, 64,000 in all.
+  EXPECT_LT(square.samples, 80'000u);
+  EXPECT_LT(needle.samples, square.samples);  // k x k per needle: 800 x 54^2 = 2.3 million
+}
+
 TEST(PieceWidth, OrientationAndOverlapDoNotMatter) {
   std::vector<Vec2> points;
   std::vector<Triangle> triangles;
