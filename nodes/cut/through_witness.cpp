@@ -34,9 +34,26 @@ double median(const Eigen::VectorXd& field) {
 
 }  // namespace
 
+double cut_shortfall(const std::vector<Mesh>& pieces, const PieceLimits& limits,
+                     const OneStrip& one_strip) {
+  double worst = 0.0;
+  for (const Mesh& piece : pieces) {
+    double shortfall = piece_shortfall(piece, limits);
+    const double least = limits.min_area;
+    if (one_strip && least > 0.0) {
+      // A piece too small to be cut in two pieces that both reach min_area must be one strip.
+      const double area = surface_area(piece);
+      const double halves = 1.0 - area / (2.0 * least);
+      if (area >= least && halves > shortfall && !one_strip(piece)) shortfall = halves;
+    }
+    worst = std::max(worst, shortfall);
+  }
+  return worst;
+}
+
 WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
                                const std::vector<int>& second, const Vec3& witness,
-                               const WitnessCutOptions& options) {
+                               const WitnessCutOptions& options, const OneStrip& one_strip) {
   const double area = surface_area(part);
   const double lo = options.margin, hi = 1.0 - options.margin;
   // A fan whose apex lies on its own base loop has no field between its boundaries.
@@ -90,10 +107,7 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   double paper_shortfall = std::numeric_limits<double>::infinity();
   double fallback_shortfall = std::numeric_limits<double>::infinity();
   auto shortfall_of = [&](const std::vector<Mesh>& pieces) {
-    double worst = 0.0;
-    for (const Mesh& piece : pieces)
-      worst = std::max(worst, piece_shortfall(piece, options.limits));
-    return worst;
+    return cut_shortfall(pieces, options.limits, one_strip);
   };
   for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
     for (const Attempt& attempt : attempts) {
@@ -142,7 +156,7 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
 
 WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
                             const std::vector<int>& second, const std::vector<int>& loop,
-                            const WitnessCutOptions& options) {
+                            const WitnessCutOptions& options, const OneStrip& one_strip) {
   const double area = surface_area(part);
   const Eigen::VectorXd f = harmonic_field(part, first, second, options.harmonic);
   const double value = hole_split_value(f, loop);
@@ -153,7 +167,7 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
   Vec3 centre = Vec3::Zero();
   for (int v : loop) centre += to_eigen(part.point(part.vertex_handle(v)));
   centre /= static_cast<double>(loop.size());
-  return cut_through_witness(part, first, second, centre, options);
+  return cut_through_witness(part, first, second, centre, options, one_strip);
 }
 
 }  // namespace papercraft

@@ -8,6 +8,7 @@
 // tongue. Then we cut across the part instead, along an iso-line of the harmonic field
 // between the part's two (approximately) farthest vertices, through the same point.
 
+#include <functional>
 #include <vector>
 
 #include "core/mesh.h"
@@ -35,6 +36,17 @@ struct WitnessCutOptions {
   double limit_gain = 0.5;
 };
 
+/// Whether a piece is one strip within the tolerance (the refinement's select, ruled and
+/// decide steps); empty: not known.
+using OneStrip = std::function<bool(const Mesh&)>;
+
+/// The worst piece_shortfall of `pieces` against `limits`, looking ahead with `one_strip`
+/// where given: a piece under twice min_area that is not one strip will be cut again into
+/// pieces that all fall under min_area, so it falls short as they would
+/// (1 - area / (2 min_area)).
+double cut_shortfall(const std::vector<Mesh>& pieces, const PieceLimits& limits,
+                     const OneStrip& one_strip = {});
+
 struct WitnessCut {
   std::vector<Mesh> pieces;  // empty when no cut made progress
   double value = 0.0;        // iso-value used
@@ -44,15 +56,17 @@ struct WitnessCut {
 /// Cuts `part` through `witness` (a point on or near it). `first`/`second` are the strip's
 /// boundary vertices (f = 0 and 1). Tries, in order: f through the witness (if it is inside
 /// the margins), the farthest-vertex field through the witness, f at 0.5, that field at 0.5;
-/// with limits, each followed by the nearest iso-values of its field that meet them.
+/// with limits, each followed by the nearest iso-values of its field that meet them (judged
+/// by cut_shortfall, with `one_strip`'s look ahead where given).
 /// \pre part is connected; first and second are non-empty and disjoint.
 WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
                                const std::vector<int>& second, const Vec3& witness,
-                               const WitnessCutOptions& options = {});
+                               const WitnessCutOptions& options = {},
+                               const OneStrip& one_strip = {});
 
 /// Cuts `part` through the hole `loop` (iso-line of f between its extremes on the hole).
 WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
                             const std::vector<int>& second, const std::vector<int>& loop,
-                            const WitnessCutOptions& options = {});
+                            const WitnessCutOptions& options = {}, const OneStrip& one_strip = {});
 
 }  // namespace papercraft

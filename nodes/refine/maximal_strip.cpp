@@ -72,7 +72,7 @@ Probe probe(const Mesh& part, const std::vector<Mesh>& pieces, const std::vector
 
 WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed, double tolerance,
-                             const MaximalStripOptions& options) {
+                             const MaximalStripOptions& options, const OneStrip& one_strip) {
   std::vector<char> in_first(part.n_vertices(), 0);
   for (int v : first) in_first[v] = 1;
   if (std::any_of(second.begin(), second.end(), [&](int v) { return in_first[v] != 0; })) {
@@ -108,7 +108,7 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       bool record = big_enough;
       if (big_enough && options.cut.limits.active()) {
         for (const Mesh& piece : pieces) {
-          if (piece_fits(piece, options.cut.limits)) continue;
+          if (cut_shortfall({piece}, options.cut.limits, one_strip) == 0.0) continue;
           record = false;
           if (&piece != result.piece) big_enough = false;
         }

@@ -33,6 +33,7 @@ struct MaximalStripOptions {
 /// (the caller then cuts through the worst point). `first`/`second` as in harmonic_field.
 WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed, double tolerance,
-                             const MaximalStripOptions& options = {});
+                             const MaximalStripOptions& options = {},
+                             const OneStrip& one_strip = {});
 
 }  // namespace papercraft

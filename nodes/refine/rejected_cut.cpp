@@ -8,7 +8,8 @@ WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bo
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
                              const RejectedCutOptions& options, const TwistOptions& twist,
-                             const DecideOptions& decide, const PieceLimits& limits) {
+                             const DecideOptions& decide, const PieceLimits& limits,
+                             const OneStrip& one_strip) {
   WitnessCutOptions cut_options = options.cut;
   cut_options.limits = limits;
   cut_options.cut.snap_distance = options.snap_tolerance * tolerance;
@@ -21,13 +22,14 @@ WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bo
     settings.min_strip_fraction = min_strip_fraction;
     settings.twist = twist;
     settings.decide = decide;
-    return cut_maximal_strip(part, first, first_closed, second, second_closed, tolerance, settings);
+    return cut_maximal_strip(part, first, first_closed, second, second_closed, tolerance, settings,
+                             cut_options.limits.active() ? one_strip : OneStrip{});
   };
   WitnessCut cut;
   if (search) cut = maximal_strip(options.search_min_fraction);
   if (cut.pieces.empty()) {
-    cut = hole ? cut_through_hole(part, first, second, *hole, cut_options)
-               : cut_through_witness(part, first, second, witness, cut_options);
+    cut = hole ? cut_through_hole(part, first, second, *hole, cut_options, one_strip)
+               : cut_through_witness(part, first, second, witness, cut_options, one_strip);
   }
   // No iso-line through the worst point splits the part: a thin strip next to a boundary is
   // still progress (within the limits if one is, else however thin).

@@ -32,11 +32,13 @@ struct RejectedCutOptions {
 /// makes progress. The maximal-strip search builds and decides its probes with `twist` and
 /// `decide`, as the refinement does. With `limits`, no cut leaves a piece narrower or smaller
 /// than they allow where another iso-value would not (through_witness.h); the search keeps
-/// only strips whose pieces meet them.
+/// only strips whose pieces meet them. `one_strip`, where given, looks ahead: a piece under
+/// twice min_area must be one strip (WitnessCutOptions::one_strip).
 WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
                              const RejectedCutOptions& options, const TwistOptions& twist,
-                             const DecideOptions& decide, const PieceLimits& limits = {});
+                             const DecideOptions& decide, const PieceLimits& limits = {},
+                             const OneStrip& one_strip = {});
 
 }  // namespace papercraft

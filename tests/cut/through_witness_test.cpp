@@ -43,5 +43,29 @@ TEST(CutThroughWitness, BandWithoutFieldIsHalved) {
   for (const Mesh& piece : cut.pieces) EXPECT_GT(surface_area(piece), 0.25 * area);
 }
 
+// A piece under twice min_area that is not one strip would be cut into pieces that all fall
+// short of min_area: it falls short as they would. One that is a strip, or large enough to be
+// cut in two that reach min_area, or already short, is judged as it is.
+TEST(CutShortfall, PieceTooSmallToCutAgainMustBeOneStrip) {
+  TriangleMesh square;
+  square.vertices = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}};
+  square.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const std::vector<Mesh> pieces = {to_mesh(square)};  // area 100
+  PieceLimits limits;
+  limits.min_area = 80.0;
+  int asked = 0;
+  const OneStrip not_a_strip = [&](const Mesh&) { return ++asked, false; };
+  const OneStrip a_strip = [&](const Mesh&) { return ++asked, true; };
+  EXPECT_EQ(cut_shortfall(pieces, limits), 0.0);  // no look ahead
+  EXPECT_NEAR(cut_shortfall(pieces, limits, not_a_strip), 1.0 - 100.0 / 160.0, 1e-12);
+  EXPECT_EQ(cut_shortfall(pieces, limits, a_strip), 0.0);
+  EXPECT_EQ(asked, 2);
+  limits.min_area = 40.0;  // room for two pieces of 40
+  EXPECT_EQ(cut_shortfall(pieces, limits, not_a_strip), 0.0);
+  limits.min_area = 125.0;  // short already (by 0.2): judged as it is
+  EXPECT_NEAR(cut_shortfall(pieces, limits, not_a_strip), 0.2, 1e-12);
+  EXPECT_EQ(asked, 2);
+}
+
 }  // namespace
 }  // namespace papercraft
