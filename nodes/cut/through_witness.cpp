@@ -34,20 +34,23 @@ double median(const Eigen::VectorXd& field) {
 
 }  // namespace
 
+double piece_shortfall_ahead(const Mesh& piece, const PieceLimits& limits,
+                             const OneStrip& one_strip) {
+  const double shortfall = piece_shortfall(piece, limits);
+  const double least = limits.min_area;
+  if (!one_strip || !(least > 0.0)) return shortfall;
+  // A piece too small to be cut in two pieces that both reach min_area must be one strip.
+  const double area = surface_area(piece);
+  const double halves = 1.0 - area / (2.0 * least);
+  if (area >= least && halves > shortfall && !one_strip(piece)) return halves;
+  return shortfall;
+}
+
 double cut_shortfall(const std::vector<Mesh>& pieces, const PieceLimits& limits,
                      const OneStrip& one_strip) {
   double worst = 0.0;
-  for (const Mesh& piece : pieces) {
-    double shortfall = piece_shortfall(piece, limits);
-    const double least = limits.min_area;
-    if (one_strip && least > 0.0) {
-      // A piece too small to be cut in two pieces that both reach min_area must be one strip.
-      const double area = surface_area(piece);
-      const double halves = 1.0 - area / (2.0 * least);
-      if (area >= least && halves > shortfall && !one_strip(piece)) shortfall = halves;
-    }
-    worst = std::max(worst, shortfall);
-  }
+  for (const Mesh& piece : pieces)
+    worst = std::max(worst, piece_shortfall_ahead(piece, limits, one_strip));
   return worst;
 }
 

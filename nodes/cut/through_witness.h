@@ -40,10 +40,13 @@ struct WitnessCutOptions {
 /// decide steps); empty: not known.
 using OneStrip = std::function<bool(const Mesh&)>;
 
-/// The worst piece_shortfall of `pieces` against `limits`, looking ahead with `one_strip`
-/// where given: a piece under twice min_area that is not one strip will be cut again into
-/// pieces that all fall under min_area, so it falls short as they would
-/// (1 - area / (2 min_area)).
+/// piece_shortfall of `piece` against `limits`, looking ahead with `one_strip` where given: a
+/// piece under twice min_area that is not one strip will be cut again into pieces that all
+/// fall under min_area, so it falls short as they would (1 - area / (2 min_area)).
+double piece_shortfall_ahead(const Mesh& piece, const PieceLimits& limits,
+                             const OneStrip& one_strip = {});
+
+/// The worst piece_shortfall_ahead of `pieces`: how far a cut falls short of the limits.
 double cut_shortfall(const std::vector<Mesh>& pieces, const PieceLimits& limits,
                      const OneStrip& one_strip = {});
 

@@ -108,7 +108,7 @@ WitnessCut cut_maximal_strip(const Mesh& part, const std::vector<int>& first, bo
       bool record = big_enough;
       if (big_enough && options.cut.limits.active()) {
         for (const Mesh& piece : pieces) {
-          if (cut_shortfall({piece}, options.cut.limits, one_strip) == 0.0) continue;
+          if (piece_shortfall_ahead(piece, options.cut.limits, one_strip) == 0.0) continue;
           record = false;
           if (&piece != result.piece) big_enough = false;
         }

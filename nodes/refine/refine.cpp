@@ -76,17 +76,17 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
   }
   const std::vector<int>* hole = verdict.hole >= 0 ? &boundaries.holes[verdict.hole] : nullptr;
   // Look ahead for pieces too small to be cut again: is one a strip within the tolerance?
+  RefineOptions quick = options;
+  quick.decide.bounded.locate_maximum = false;  // the decision only
   auto one_strip = [&](const Mesh& piece) {
-    RefineOptions quick = options;
-    quick.decide.bounded.locate_maximum = false;  // the decision only
     const StripBoundaries sides = select_strip_boundaries(piece, tolerance, quick);
     const RuledStrip strip = build_strip(piece, sides, quick);
     return !strip.mesh.empty() && decide_strip(piece, sides, strip, tolerance, quick).accept;
   };
-  WitnessCut cut = cut_rejected_part(
-      part, boundaries.first, boundaries.first_closed, boundaries.second, boundaries.second_closed,
-      hole, verdict.witness, tolerance, options.cut, options.twist, options.decide, limits,
-      limits.min_area > 0.0 ? OneStrip(one_strip) : OneStrip{});
+  WitnessCut cut =
+      cut_rejected_part(part, boundaries.first, boundaries.first_closed, boundaries.second,
+                        boundaries.second_closed, hole, verdict.witness, tolerance, options.cut,
+                        options.twist, options.decide, limits, one_strip);
   if (spdlog::should_log(spdlog::level::debug)) {
     std::string shortfalls;
     for (const Mesh& piece : cut.pieces)

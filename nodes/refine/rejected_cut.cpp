@@ -23,7 +23,7 @@ WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bo
     settings.twist = twist;
     settings.decide = decide;
     return cut_maximal_strip(part, first, first_closed, second, second_closed, tolerance, settings,
-                             cut_options.limits.active() ? one_strip : OneStrip{});
+                             one_strip);
   };
   WitnessCut cut;
   if (search) cut = maximal_strip(options.search_min_fraction);
