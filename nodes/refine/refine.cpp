@@ -11,6 +11,7 @@
 #include "core/errors.h"
 #include "nodes/refine/exhaustive_select.h"
 #include "nodes/ruled/part_strip.h"
+#include "nodes/unfold/sequential.h"
 
 namespace papercraft {
 
@@ -58,6 +59,13 @@ StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
                      options.decide);
 }
 
+bool is_one_flat_strip(const Mesh& piece, double tolerance, const RefineOptions& options) {
+  const StripBoundaries sides = select_strip_boundaries(piece, tolerance, options);
+  const RuledStrip strip = build_strip(piece, sides, options);
+  return !strip.mesh.empty() && unfold_strip(strip, 0, 0).size() == 1 &&
+         decide_strip(piece, sides, strip, tolerance, options).accept;
+}
+
 std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,
                                      const StripVerdict& verdict, int depth, double tolerance,
                                      const RefineOptions& options, const std::string& part_name,
@@ -75,14 +83,11 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
     fail("reached " + std::to_string(options.max_depth) + " nested cuts (max_depth)");
   }
   const std::vector<int>* hole = verdict.hole >= 0 ? &boundaries.holes[verdict.hole] : nullptr;
-  // Look ahead for pieces too small to be cut again: is one a strip within the tolerance?
+  // Look ahead for pieces too small to be cut again: is one a strip within the tolerance
+  // that lies flat in one piece?
   RefineOptions quick = options;
   quick.decide.bounded.locate_maximum = false;  // the decision only
-  auto one_strip = [&](const Mesh& piece) {
-    const StripBoundaries sides = select_strip_boundaries(piece, tolerance, quick);
-    const RuledStrip strip = build_strip(piece, sides, quick);
-    return !strip.mesh.empty() && decide_strip(piece, sides, strip, tolerance, quick).accept;
-  };
+  auto one_strip = [&](const Mesh& piece) { return is_one_flat_strip(piece, tolerance, quick); };
   WitnessCut cut =
       cut_rejected_part(part, boundaries.first, boundaries.first_closed, boundaries.second,
                         boundaries.second_closed, hole, verdict.witness, tolerance, options.cut,
