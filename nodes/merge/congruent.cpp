@@ -1030,6 +1030,30 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
 
 }  // namespace
 
+namespace {
+
+// The single-edge hinges between strip `s` and its neighbours over `pairs` (its
+// shared_boundaries), the longest first.
+std::vector<Hinge> hinges_around(const std::vector<FlatStrip>& strips, int s,
+                                 const std::vector<PairCandidate>& pairs) {
+  return hinges_of(pairs, strips,
+                   [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
+}
+
+// The index of the smallest strip of less than `bound` whose id is not in `given_up`, or -1.
+int smallest_below(const std::vector<FlatStrip>& strips, double bound,
+                   const std::set<int>& given_up) {
+  int smallest = -1;
+  double least = bound;
+  for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
+    const double area = flat_area(strips[s]);
+    if (area < least && !given_up.count(strips[s].id)) smallest = s, least = area;
+  }
+  return smallest;
+}
+
+}  // namespace
+
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options, std::vector<int>* left,
                                          double min_width) {
@@ -1040,18 +1064,11 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
   std::set<int> given_up;  // ids of small strips no neighbour takes
   while (true) {
     // The smallest strip still to place.
-    int small = -1;
-    double smallest = min_area;
-    for (int s = 0; s < static_cast<int>(strips.size()); ++s) {
-      const double area = flat_area(strips[s]);
-      if (area < smallest && !given_up.count(strips[s].id)) small = s, smallest = area;
-    }
+    const int small = smallest_below(strips, min_area, given_up);
     if (small < 0) break;
     // Its shared boundaries, as single edges, the longest first: the hinge it folds over.
     const std::vector<PairCandidate> pairs = shared_boundaries(strips, small);
-    const auto hinges = hinges_of(pairs, strips, [&](const PairCandidate& pair) {
-      return pair.x == small || pair.y == small;
-    });
+    const auto hinges = hinges_around(strips, small, pairs);
     bool joined = false;
     for (const Hinge& hinge : hinges) {
       const PairCandidate& pair = pairs[hinge.pair];
@@ -1184,6 +1201,47 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
   return strips;
 }
 
+std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double below_area,
+                                           double min_width, const MergeOptions& options) {
+  validate(strips, options);
+  if (!(below_area > 0.0)) return strips;
+  for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
+  const auto narrow_share = [&](const FlatStrip& strip) {
+    return min_width > 0.0 ? narrow_area_fraction(strip.vertices2d, strip.triangles, min_width)
+                           : 0.0;
+  };
+  std::set<int> given_up;  // ids of strips no neighbour takes
+  while (true) {
+    const int modest = smallest_below(strips, below_area, given_up);
+    if (modest < 0) break;
+    const std::vector<PairCandidate> pairs = shared_boundaries(strips, modest);
+    const auto hinges = hinges_around(strips, modest, pairs);
+    const double modest_share = narrow_share(strips[modest]);
+    std::map<int, double> neighbour_share;
+    bool joined = false;
+    for (const Hinge& hinge : hinges) {
+      const PairCandidate& pair = pairs[hinge.pair];
+      FlatStrip merged;
+      if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
+      if (min_width > 0.0) {
+        const int neighbour = pair.x == modest ? pair.y : pair.x;
+        auto it = neighbour_share.find(neighbour);
+        if (it == neighbour_share.end())
+          it = neighbour_share.emplace(neighbour, narrow_share(strips[neighbour])).first;
+        const double allowed = std::max({it->second, modest_share, options.narrow_join_share});
+        if (narrow_share(merged) > allowed) continue;
+      }
+      strips[pair.x] = std::move(merged);
+      strips.erase(strips.begin() + pair.y);
+      joined = true;
+      break;
+    }
+    if (!joined) given_up.insert(strips[modest].id);
+  }
+  label_seams(strips);
+  return strips;
+}
+
 std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strips, double min_area,
                                                     double min_width, const MergeOptions& options,
                                                     std::vector<int>* left) {
@@ -1193,7 +1251,18 @@ std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strip
                               min_area);
   if (!small.empty())
     strips = join_small_strips(std::move(strips), min_area, options, &small, min_width);
-  if (left) *left = std::move(small);
+  if (options.modest_join_factor > 1.0)
+    strips = hinge_modest_strips(std::move(strips), options.modest_join_factor * min_area,
+                                 min_width, options);
+  if (left) {
+    // The crumbs left are those of `small` still under min_area (a hinge above may have
+    // joined one).
+    left->clear();
+    for (const FlatStrip& strip : strips)
+      if (std::find(small.begin(), small.end(), strip.id) != small.end() &&
+          flat_area(strip) < min_area)
+        left->push_back(strip.id);
+  }
   return strips;
 }
 

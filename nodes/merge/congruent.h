@@ -23,6 +23,10 @@ struct MergeOptions {
   /// The merge node hinges a piece narrower than min_width_mm over more than this share of
   /// its area onto a neighbour (join_narrow_strips); 1: never.
   double narrow_join_share = 0.25;
+  /// After the joins of crumbs and narrow pieces, a piece under this times min_area (a legal
+  /// but small piece, one more to cut and glue) is hinged onto a neighbour where the union
+  /// lies flat and is no narrower (hinge_modest_strips); <= 1: never.
+  double modest_join_factor = 2.0;
 };
 
 /// Joins flat strips of one model whose shared boundaries have congruent flat images.
@@ -119,10 +123,22 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
                                           double narrow_share, const MergeOptions& options = {},
                                           int most_hinges = 256, double min_area = 0.0);
 
+/// Hinges each flat strip of less than `below_area` onto a neighbour, the smallest first, as
+/// join_small_strips hinges a crumb (its shared edges the longest first, kept where the union
+/// overlaps nowhere), where the union is narrower than `min_width` over no more of its area than
+/// the larger of the strip's share, the neighbour's and options.narrow_join_share (`min_width`
+/// 0: not checked). Fewer pieces to cut: a piece a few square centimetres large folds onto its
+/// neighbour, its other shared edges becoming seams of the union with itself. A union still
+/// under `below_area` is tried again; a strip no hinge takes stays. Then label_seams runs.
+/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double below_area,
+                                           double min_width, const MergeOptions& options = {});
+
 /// The merge node's joins after merge_congruent: join_small_strips, then join_narrow_strips
 /// (at most 256 hinges a strip), then join_small_strips once more where crumbs were left, since
 /// the narrow joins change their neighbours (a union to fold onto, a neighbour large enough to
-/// give triangles). The ids of the small strips still left go to `left` (when given).
+/// give triangles), then hinge_modest_strips below options.modest_join_factor times min_area.
+/// The ids of the small strips still left go to `left` (when given).
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strips, double min_area,
                                                     double min_width,

@@ -88,7 +88,12 @@ void register_merge_congruent(Registry& registry) {
               "narrow_join_share", [](O & o) -> auto& { return o.narrow_join_share; },
               "a piece narrower than min_width_mm over more than this share of its area is "
               "hinged onto a wider neighbour (1: never)",
-              between(0, 1));
+              between(0, 1))
+          .add(
+              "modest_join_factor", [](O & o) -> auto& { return o.modest_join_factor; },
+              "a piece under this times min_area_mm2 is hinged onto a neighbour where the union "
+              "lies flat and is no narrower (<= 1: never)",
+              at_least(0));
   registry.add({.name = "merge.congruent",
                 .summary = "join flat strips along congruent shared boundaries",
                 .input = MessageType::of<UnfoldedStrip>(),

@@ -454,6 +454,22 @@ FlatStrip straight_wall(const std::vector<Vec3>& bottom, double h) {
   return wall;
 }
 
+// The 4 x 4 floor at z = 0 and a wall `h` high standing on two of its sides (c -> b -> a, a
+// corner), unrolled straight.
+FlatStrip corner_floor() {
+  return flat_floor(Vec3(0, 0, 0), Vec3(4, 0, 0), Vec3(4, 4, 0), Vec3(0, 4, 0));
+}
+FlatStrip corner_wall(double h) {
+  const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), up(0, 0, h);
+  FlatStrip wall;
+  wall.id = 1;
+  wall.source_strip = 1;
+  wall.vertices3d = {c, b, a, c + up, b + up, a + up};
+  wall.vertices2d = {{0, 0}, {4, 0}, {8, 0}, {0, h}, {4, h}, {8, h}};
+  wall.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+  return wall;
+}
+
 // A floor and a narrow wall standing on some of its sides: merge_congruent leaves them apart
 // (the shared edges bend on the floor and run straight on the wall), then join_narrow_strips
 // folds the wall out of the floor, into one piece wide over all but a quarter of its area.
@@ -476,15 +492,8 @@ std::vector<FlatStrip> join_wall_to_floor(const FlatStrip& floor, const FlatStri
 // the floor's other side at a right angle (a seam with room for a tab), and the union is a
 // piece wide over all but a tenth of its area.
 TEST(JoinNarrowStrips, WallIsFoldedOutOfTheFloorItStandsOn) {
-  const double h = 0.2;
-  const Vec3 a(0, 0, 0), b(4, 0, 0), c(4, 4, 0), d(0, 4, 0), up(0, 0, h);
-  const FlatStrip floor = flat_floor(a, b, c, d);
-  FlatStrip wall;
-  wall.id = 1;
-  wall.source_strip = 1;
-  wall.vertices3d = {c, b, a, c + up, b + up, a + up};
-  wall.vertices2d = {{0, 0}, {4, 0}, {8, 0}, {0, h}, {4, h}, {8, h}};
-  wall.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+  const FlatStrip floor = corner_floor();
+  const FlatStrip wall = corner_wall(0.2);
   const double width = 0.5;
   const auto joined = join_wall_to_floor(floor, wall, width);
   ASSERT_EQ(joined.size(), 1u);
@@ -781,6 +790,38 @@ TEST(JoinNarrowStrips, TwoBandsAreNotJoinedIntoOneAsNarrow) {
   strips = merge_congruent(strips);
   ASSERT_EQ(strips.size(), 2u);
   EXPECT_EQ(join_narrow_strips(strips, 0.5, 0.25).size(), 2u);
+}
+
+// A 4 x 4 floor and a wall 1.5 high around two of its sides (a corner): neither a crumb nor
+// narrow, and merge_congruent cannot join them (the floor's sides turn, the wall runs
+// straight). The wall's 12 is under twice a min_area of 10, so hinge_modest_strips folds it
+// out of the floor: one piece, all its triangles, none overlapping, the floor's other side a
+// seam of the piece with itself.
+TEST(HingeModestStrips, PieceUnderTwiceMinAreaIsFoldedOutOfItsNeighbour) {
+  const std::vector<FlatStrip> strips = merge_congruent({corner_floor(), corner_wall(1.5)});
+  ASSERT_EQ(strips.size(), 2u);
+  const double min_area = 10.0, width = 0.5;
+  std::vector<int> left;
+  ASSERT_EQ(join_small_strips(strips, min_area, {}, &left, width).size(), 2u);
+  ASSERT_EQ(join_narrow_strips(strips, width, 0.25).size(), 2u);
+
+  const auto joined = hinge_modest_strips(strips, 2.0 * min_area, width);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_EQ(joined[0].triangles.size(), 6u);
+  EXPECT_NEAR(area_of(joined[0]), 28.0, 1e-9);
+  expect_valid(joined);
+  int seam_edges = 0;
+  for (const BoundaryEdge& e : joined[0].boundary) seam_edges += e.kind == EdgeKind::Seam;
+  EXPECT_EQ(seam_edges, 2);
+
+  // The merge node's joins do it at the default factor of 2, and not at a factor of 1; a wall
+  // as large as 2 min_area stays.
+  EXPECT_EQ(join_small_and_narrow_strips(strips, min_area, width, {}, &left).size(), 1u);
+  EXPECT_TRUE(left.empty());
+  MergeOptions never;
+  never.modest_join_factor = 1.0;
+  EXPECT_EQ(join_small_and_narrow_strips(strips, min_area, width, never).size(), 2u);
+  EXPECT_EQ(hinge_modest_strips(strips, 2.0 * 6.0, width).size(), 2u);
 }
 
 // A flat strip made by hand: 3D points in the plane z = 0 at its flat points, but where
