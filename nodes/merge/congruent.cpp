@@ -1202,35 +1202,20 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
 }
 
 std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double below_area,
-                                           double min_width, const MergeOptions& options) {
+                                           const MergeOptions& options) {
   validate(strips, options);
   if (!(below_area > 0.0)) return strips;
   for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
-  const auto narrow_share = [&](const FlatStrip& strip) {
-    return min_width > 0.0 ? narrow_area_fraction(strip.vertices2d, strip.triangles, min_width)
-                           : 0.0;
-  };
   std::set<int> given_up;  // ids of strips no neighbour takes
   while (true) {
     const int modest = smallest_below(strips, below_area, given_up);
     if (modest < 0) break;
     const std::vector<PairCandidate> pairs = shared_boundaries(strips, modest);
-    const auto hinges = hinges_around(strips, modest, pairs);
-    const double modest_share = narrow_share(strips[modest]);
-    std::map<int, double> neighbour_share;
     bool joined = false;
-    for (const Hinge& hinge : hinges) {
+    for (const Hinge& hinge : hinges_around(strips, modest, pairs)) {
       const PairCandidate& pair = pairs[hinge.pair];
       FlatStrip merged;
       if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
-      if (min_width > 0.0) {
-        const int neighbour = pair.x == modest ? pair.y : pair.x;
-        auto it = neighbour_share.find(neighbour);
-        if (it == neighbour_share.end())
-          it = neighbour_share.emplace(neighbour, narrow_share(strips[neighbour])).first;
-        const double allowed = std::max({it->second, modest_share, options.narrow_join_share});
-        if (narrow_share(merged) > allowed) continue;
-      }
       strips[pair.x] = std::move(merged);
       strips.erase(strips.begin() + pair.y);
       joined = true;
@@ -1252,8 +1237,7 @@ std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strip
   if (!small.empty())
     strips = join_small_strips(std::move(strips), min_area, options, &small, min_width);
   if (options.modest_join_factor > 1.0)
-    strips = hinge_modest_strips(std::move(strips), options.modest_join_factor * min_area,
-                                 min_width, options);
+    strips = hinge_modest_strips(std::move(strips), options.modest_join_factor * min_area, options);
   if (left) {
     // The crumbs left are those of `small` still under min_area (a hinge above may have
     // joined one).

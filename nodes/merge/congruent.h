@@ -25,7 +25,7 @@ struct MergeOptions {
   double narrow_join_share = 0.25;
   /// After the joins of crumbs and narrow pieces, a piece under this times min_area (a legal
   /// but small piece, one more to cut and glue) is hinged onto a neighbour where the union
-  /// lies flat and is no narrower (hinge_modest_strips); <= 1: never.
+  /// lies flat (hinge_modest_strips); <= 1: never.
   double modest_join_factor = 2.0;
 };
 
@@ -124,15 +124,16 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
                                           int most_hinges = 256, double min_area = 0.0);
 
 /// Hinges each flat strip of less than `below_area` onto a neighbour, the smallest first, as
-/// join_small_strips hinges a crumb (its shared edges the longest first, kept where the union
-/// overlaps nowhere), where the union is narrower than `min_width` over no more of its area than
-/// the larger of the strip's share, the neighbour's and options.narrow_join_share (`min_width`
-/// 0: not checked). Fewer pieces to cut: a piece a few square centimetres large folds onto its
-/// neighbour, its other shared edges becoming seams of the union with itself. A union still
-/// under `below_area` is tried again; a strip no hinge takes stays. Then label_seams runs.
+/// join_small_strips hinges a crumb (its shared edges the longest first, the first union that
+/// overlaps nowhere kept). Fewer pieces to cut: a piece a few square centimetres large folds
+/// onto its neighbour, its other shared edges becoming seams of the union with itself. No width
+/// check is needed: a disc inside either piece lies inside the union, so the union is narrow
+/// over at most the two pieces' narrow areas, a share no larger than the larger of theirs. A
+/// union still under `below_area` is tried again; a strip no hinge takes stays. Then
+/// label_seams runs.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double below_area,
-                                           double min_width, const MergeOptions& options = {});
+                                           const MergeOptions& options = {});
 
 /// The merge node's joins after merge_congruent: join_small_strips, then join_narrow_strips
 /// (at most 256 hinges a strip), then join_small_strips once more where crumbs were left, since

@@ -92,7 +92,7 @@ void register_merge_congruent(Registry& registry) {
           .add(
               "modest_join_factor", [](O & o) -> auto& { return o.modest_join_factor; },
               "a piece under this times min_area_mm2 is hinged onto a neighbour where the union "
-              "lies flat and is no narrower (<= 1: never)",
+              "lies flat (<= 1: never)",
               at_least(0));
   registry.add({.name = "merge.congruent",
                 .summary = "join flat strips along congruent shared boundaries",

@@ -805,7 +805,7 @@ TEST(HingeModestStrips, PieceUnderTwiceMinAreaIsFoldedOutOfItsNeighbour) {
   ASSERT_EQ(join_small_strips(strips, min_area, {}, &left, width).size(), 2u);
   ASSERT_EQ(join_narrow_strips(strips, width, 0.25).size(), 2u);
 
-  const auto joined = hinge_modest_strips(strips, 2.0 * min_area, width);
+  const auto joined = hinge_modest_strips(strips, 2.0 * min_area);
   ASSERT_EQ(joined.size(), 1u);
   EXPECT_EQ(joined[0].triangles.size(), 6u);
   EXPECT_NEAR(area_of(joined[0]), 28.0, 1e-9);
@@ -821,7 +821,7 @@ TEST(HingeModestStrips, PieceUnderTwiceMinAreaIsFoldedOutOfItsNeighbour) {
   MergeOptions never;
   never.modest_join_factor = 1.0;
   EXPECT_EQ(join_small_and_narrow_strips(strips, min_area, width, never).size(), 2u);
-  EXPECT_EQ(hinge_modest_strips(strips, 2.0 * 6.0, width).size(), 2u);
+  EXPECT_EQ(hinge_modest_strips(strips, 2.0 * 6.0).size(), 2u);
 }
 
 // A flat strip made by hand: 3D points in the plane z = 0 at its flat points, but where
