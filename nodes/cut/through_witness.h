@@ -42,8 +42,8 @@ using OneStrip = std::function<bool(const Mesh&)>;
 
 /// piece_shortfall of `piece` against `limits`, looking ahead with `one_strip` where given: a
 /// piece under twice min_area that is not one strip will be cut again (or split by the
-/// unfolding) into pieces that all fall under min_area, so it falls short as they would (1 - area /
-/// (2 min_area)).
+/// unfolding) into pieces that all fall under min_area, so it falls short as they would
+/// (1 - area / (2 min_area)).
 double piece_shortfall_ahead(const Mesh& piece, const PieceLimits& limits,
                              const OneStrip& one_strip = {});
 

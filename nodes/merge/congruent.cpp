@@ -1032,12 +1032,22 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
 
 namespace {
 
-// The single-edge hinges between strip `s` and its neighbours over `pairs` (its
-// shared_boundaries), the longest first.
-std::vector<Hinge> hinges_around(const std::vector<FlatStrip>& strips, int s,
-                                 const std::vector<PairCandidate>& pairs) {
-  return hinges_of(pairs, strips,
-                   [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
+// Strip `s` hinged whole onto a neighbour: over their shared edges, the longest first, the
+// first union that overlaps nowhere replaces the lower index of the two and the other is
+// erased. False (strips unchanged) when no hinge lays it flat.
+bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& options) {
+  const std::vector<PairCandidate> pairs = shared_boundaries(strips, s);
+  const auto hinges = hinges_of(
+      pairs, strips, [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
+  for (const Hinge& hinge : hinges) {
+    const PairCandidate& pair = pairs[hinge.pair];
+    FlatStrip merged;
+    if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
+    strips[pair.x] = std::move(merged);
+    strips.erase(strips.begin() + pair.y);
+    return true;
+  }
+  return false;
 }
 
 // The index of the smallest strip of less than `bound` whose id is not in `given_up`, or -1.
@@ -1067,18 +1077,7 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     const int small = smallest_below(strips, min_area, given_up);
     if (small < 0) break;
     // Its shared boundaries, as single edges, the longest first: the hinge it folds over.
-    const std::vector<PairCandidate> pairs = shared_boundaries(strips, small);
-    const auto hinges = hinges_around(strips, small, pairs);
-    bool joined = false;
-    for (const Hinge& hinge : hinges) {
-      const PairCandidate& pair = pairs[hinge.pair];
-      FlatStrip merged;
-      if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
-      strips[pair.x] = std::move(merged);
-      strips.erase(strips.begin() + pair.y);
-      joined = true;
-      break;
-    }
+    bool joined = hinge_whole(strips, small, options);
     if (!joined) joined = absorb_by_triangles(strips, small, options);
     if (!joined && min_width > 0.0) {
       // Cut in two, each half hinged onto a neighbour that gets no narrower than it was (or
@@ -1210,18 +1209,7 @@ std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double
   while (true) {
     const int modest = smallest_below(strips, below_area, given_up);
     if (modest < 0) break;
-    const std::vector<PairCandidate> pairs = shared_boundaries(strips, modest);
-    bool joined = false;
-    for (const Hinge& hinge : hinges_around(strips, modest, pairs)) {
-      const PairCandidate& pair = pairs[hinge.pair];
-      FlatStrip merged;
-      if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
-      strips[pair.x] = std::move(merged);
-      strips.erase(strips.begin() + pair.y);
-      joined = true;
-      break;
-    }
-    if (!joined) given_up.insert(strips[modest].id);
+    if (!hinge_whole(strips, modest, options)) given_up.insert(strips[modest].id);
   }
   label_seams(strips);
   return strips;

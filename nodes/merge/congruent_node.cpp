@@ -50,14 +50,11 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
   const PieceLimits limits = model.piece_limits();
   for (const FlatStrip& strip : strips) {
     if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
-      const double area = flat_area(strip);
-      if (area < limits.min_area) {  // else a narrow strip was joined to it since
-        const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
-                                 std::to_string(std::lround(area * scale * scale)) +
-                                 " mm^2, below min_area_mm2, and no neighbour takes it";
-        model.note(text);
-        spdlog::warn("{}: {}", model.name, text);
-      }
+      const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
+                               std::to_string(std::lround(flat_area(strip) * scale * scale)) +
+                               " mm^2, below min_area_mm2, and no neighbour takes it";
+      model.note(text);
+      spdlog::warn("{}: {}", model.name, text);
     }
     if (limits.min_width > 0.0) {
       const double narrow =
