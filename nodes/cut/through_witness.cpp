@@ -39,11 +39,13 @@ double piece_shortfall_ahead(const Mesh& piece, const PieceLimits& limits,
   const double shortfall = piece_shortfall(piece, limits);
   const double least = limits.min_area;
   if (!one_strip || !(least > 0.0)) return shortfall;
-  // A piece too small to be cut in two pieces that both reach min_area must be one strip.
   const double area = surface_area(piece);
-  const double halves = 1.0 - area / (2.0 * least);
-  if (area >= least && halves > shortfall && !one_strip(piece)) return halves;
-  return shortfall;
+  if (area < least || area >= 2.0 * least || shortfall >= 1.0) return shortfall;
+  // Too small to be cut in two pieces that both reach min_area: it must be one strip, and
+  // that strip must reach min_area on paper.
+  const std::optional<double> paper = one_strip(piece);
+  if (!paper) return std::max(shortfall, 1.0 - area / (2.0 * least));
+  return std::max(shortfall, 1.0 - std::min(*paper, least) / least);
 }
 
 double cut_shortfall(const std::vector<Mesh>& pieces, const PieceLimits& limits,

@@ -9,6 +9,7 @@
 // between the part's two (approximately) farthest vertices, through the same point.
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/mesh.h"
@@ -36,14 +37,18 @@ struct WitnessCutOptions {
   double limit_gain = 0.5;
 };
 
-/// Whether a piece is one strip within the tolerance that unfolds in one piece (the
-/// refinement's is_one_flat_strip); empty: not known.
-using OneStrip = std::function<bool(const Mesh&)>;
+/// The area on paper of a piece that is one strip within the tolerance and unfolds in one
+/// piece (the refinement's one_flat_strip_area), in model units squared; nullopt when it is
+/// not one; an empty function: not known.
+using OneStrip = std::function<std::optional<double>(const Mesh&)>;
 
-/// piece_shortfall of `piece` against `limits`, looking ahead with `one_strip` where given: a
-/// piece under twice min_area that is not one strip will be cut again (or split by the
-/// unfolding) into pieces that all fall under min_area, so it falls short as they would
-/// (1 - area / (2 min_area)).
+/// piece_shortfall of `piece` against `limits`, looking ahead with `one_strip` where given, for
+/// a piece of min_area to twice min_area (on the surface):
+/// - one that is not one strip will be cut again (or split by the unfolding) into pieces that
+///   all fall under min_area, so it falls short as they would (1 - area / (2 min_area));
+/// - one that is prints as its strip, whose area on paper is the ruled approximation's, not
+///   the surface's: over a curved cap the rulings cut across the dome and the strip can be a
+///   third smaller. Under min_area it falls short by 1 - paper area / min_area.
 double piece_shortfall_ahead(const Mesh& piece, const PieceLimits& limits,
                              const OneStrip& one_strip = {});
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/flat_boundary.h"
 #include "nodes/refine/exhaustive_select.h"
 #include "nodes/ruled/part_strip.h"
 #include "nodes/unfold/sequential.h"
@@ -59,11 +60,15 @@ StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
                      options.decide);
 }
 
-bool is_one_flat_strip(const Mesh& piece, double tolerance, const RefineOptions& options) {
+std::optional<double> one_flat_strip_area(const Mesh& piece, double tolerance,
+                                          const RefineOptions& options) {
   const StripBoundaries sides = select_strip_boundaries(piece, tolerance, options);
   const RuledStrip strip = build_strip(piece, sides, options);
-  return !strip.mesh.empty() && unfold_strip(strip, 0, 0).size() == 1 &&
-         decide_strip(piece, sides, strip, tolerance, options).accept;
+  if (strip.mesh.empty()) return std::nullopt;
+  const std::vector<FlatStrip> flat = unfold_strip(strip, 0, 0);
+  if (flat.size() != 1 || !decide_strip(piece, sides, strip, tolerance, options).accept)
+    return std::nullopt;
+  return flat_area(flat.front());
 }
 
 std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,
@@ -84,10 +89,10 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
   }
   const std::vector<int>* hole = verdict.hole >= 0 ? &boundaries.holes[verdict.hole] : nullptr;
   // Look ahead for pieces too small to be cut again: is one a strip within the tolerance
-  // that lies flat in one piece?
+  // that lies flat in one piece, and how large is that piece on paper?
   RefineOptions quick = options;
   quick.decide.bounded.locate_maximum = false;  // the decision only
-  auto one_strip = [&](const Mesh& piece) { return is_one_flat_strip(piece, tolerance, quick); };
+  auto one_strip = [&](const Mesh& piece) { return one_flat_strip_area(piece, tolerance, quick); };
   WitnessCut cut =
       cut_rejected_part(part, boundaries.first, boundaries.first_closed, boundaries.second,
                         boundaries.second_closed, hole, verdict.witness, tolerance, options.cut,

@@ -16,6 +16,7 @@
 // maximal-strip search) build and decide strips through the same steps.
 
 #include <climits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,12 +77,15 @@ RuledStrip build_strip(const Mesh& part, const StripBoundaries& boundaries,
 StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
                           const RuledStrip& strip, double tolerance, const RefineOptions& options);
 
-/// Whether `piece` is one strip within `tolerance` (select, ruled and decide accept it) that
-/// unfolds without overlapping itself (unfold_strip gives one flat strip): what the cut's
-/// look-ahead asks of a piece too small to be cut again (rejected_cut.h), since the
-/// unfolding would split an overlapping strip into two pieces each under half its area.
-/// Set options.decide.bounded.locate_maximum = false where only the decision is needed.
-bool is_one_flat_strip(const Mesh& piece, double tolerance, const RefineOptions& options);
+/// The area on paper (model units squared) of `piece`'s strip where it is one strip within
+/// `tolerance` (select, ruled and decide accept it) that unfolds without overlapping itself
+/// (unfold_strip gives one flat strip); nullopt otherwise. What the cut's look-ahead asks of a
+/// piece too small to be cut again (rejected_cut.h): the unfolding would split an overlapping
+/// strip into two pieces each under half its area, and the ruled strip over a curved cap is
+/// smaller than the surface it approximates. Set options.decide.bounded.locate_maximum = false
+/// where only the decision is needed.
+std::optional<double> one_flat_strip_area(const Mesh& piece, double tolerance,
+                                          const RefineOptions& options);
 
 /// Step 4: the pieces of a part `depth` cuts below its segment whose strip was rejected,
 /// each meeting `limits` where some cut allows it (rejected_cut.h).

@@ -33,7 +33,8 @@ struct RejectedCutOptions {
 /// `decide`, as the refinement does. With `limits`, no cut leaves a piece narrower or smaller
 /// than they allow where another iso-value would not (through_witness.h); the search keeps
 /// only strips whose pieces meet them. `one_strip`, where given, looks ahead: a piece under
-/// twice min_area must be one strip (cut_shortfall, through_witness.h).
+/// twice min_area must be one strip that reaches min_area on paper (cut_shortfall,
+/// through_witness.h).
 WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,

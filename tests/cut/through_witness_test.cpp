@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "core/mesh.h"
 
@@ -44,8 +45,8 @@ TEST(CutThroughWitness, BandWithoutFieldIsHalved) {
 }
 
 // A piece under twice min_area that is not one strip would be cut into pieces that all fall
-// short of min_area: it falls short as they would. One that is a strip, or large enough to be
-// cut in two that reach min_area, or already short, is judged as it is.
+// short of min_area: it falls short as they would. One that is a strip is judged by its area
+// on paper; one large enough to be cut in two that reach min_area, or already short, as it is.
 TEST(CutShortfall, PieceTooSmallToCutAgainMustBeOneStrip) {
   TriangleMesh square;
   square.vertices = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}};
@@ -54,17 +55,25 @@ TEST(CutShortfall, PieceTooSmallToCutAgainMustBeOneStrip) {
   PieceLimits limits;
   limits.min_area = 80.0;
   int asked = 0;
-  const OneStrip not_a_strip = [&](const Mesh&) { return ++asked, false; };
-  const OneStrip a_strip = [&](const Mesh&) { return ++asked, true; };
+  const OneStrip not_a_strip = [&](const Mesh&) -> std::optional<double> {
+    return ++asked, std::nullopt;
+  };
+  const OneStrip a_strip = [&](const Mesh&) -> std::optional<double> { return ++asked, 100.0; };
+  // A strip whose rulings cut across a dome prints smaller than the surface.
+  const OneStrip a_flatter_strip = [&](const Mesh&) -> std::optional<double> {
+    return ++asked, 60.0;
+  };
   EXPECT_EQ(cut_shortfall(pieces, limits), 0.0);  // no look ahead
   EXPECT_NEAR(cut_shortfall(pieces, limits, not_a_strip), 1.0 - 100.0 / 160.0, 1e-12);
   EXPECT_EQ(cut_shortfall(pieces, limits, a_strip), 0.0);
-  EXPECT_EQ(asked, 2);
+  EXPECT_NEAR(cut_shortfall(pieces, limits, a_flatter_strip), 1.0 - 60.0 / 80.0, 1e-12);
+  EXPECT_EQ(asked, 3);
   limits.min_area = 40.0;  // room for two pieces of 40
   EXPECT_EQ(cut_shortfall(pieces, limits, not_a_strip), 0.0);
   limits.min_area = 125.0;  // short already (by 0.2): judged as it is
   EXPECT_NEAR(cut_shortfall(pieces, limits, not_a_strip), 0.2, 1e-12);
-  EXPECT_EQ(asked, 2);
+  EXPECT_NEAR(cut_shortfall(pieces, limits, a_flatter_strip), 0.2, 1e-12);
+  EXPECT_EQ(asked, 3);
 }
 
 }  // namespace
