@@ -100,7 +100,7 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
   if (spdlog::should_log(spdlog::level::debug)) {
     std::string shortfalls;
     for (const Mesh& piece : cut.pieces)
-      shortfalls += " " + std::to_string(piece_shortfall(piece, limits));
+      shortfalls += " " + std::to_string(piece_shortfall_ahead(piece, limits, one_strip));
     spdlog::debug(
         "cut part {} ({} faces, {} holes, hole {}, error {:.4g}) at {} = {:.4f} into {} (limit "
         "shortfalls{})",
