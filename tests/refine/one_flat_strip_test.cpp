@@ -43,7 +43,8 @@ Mesh ruffled_band(double amplitude) {
 // A barrel: a band round the z axis from z = 0 to 1 whose radius swells from 1 at its rims to
 // 1 + bulge halfway up, in `rows` rings of triangles. Within a tolerance above the bulge its
 // strip is the cylinder of radius 1 between the rims, whose rulings cut straight across the
-// swelling: on paper it is the cylinder's 2 pi, less than the barrel's surface.
+// swelling: on paper it is the cylinder's area (the 96-gon's perimeter), less than the
+// barrel's surface.
 Mesh barrel(double bulge, int rows) {
   constexpr double kPi = 3.14159265358979323846;
   constexpr int kSegments = 96;
