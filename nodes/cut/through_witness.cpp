@@ -166,13 +166,49 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
   const Eigen::VectorXd f = harmonic_field(part, first, second, options.harmonic);
   const double value = hole_split_value(f, loop);
   std::vector<Mesh> pieces = cut_along_isoline(part, f, value, options.cut);
-  if (makes_progress(part, pieces, area, options.min_piece_fraction))
-    return {std::move(pieces), value};
-  // The hole lies where f hardly varies: cut across the part through the hole instead.
-  Vec3 centre = Vec3::Zero();
-  for (int v : loop) centre += to_eigen(part.point(part.vertex_handle(v)));
-  centre /= static_cast<double>(loop.size());
-  return cut_through_witness(part, first, second, centre, options, one_strip);
+  if (!makes_progress(part, pieces, area, options.min_piece_fraction)) {
+    // The hole lies where f hardly varies: cut across the part through the hole instead.
+    Vec3 centre = Vec3::Zero();
+    for (int v : loop) centre += to_eigen(part.point(part.vertex_handle(v)));
+    centre /= static_cast<double>(loop.size());
+    return cut_through_witness(part, first, second, centre, options, one_strip);
+  }
+  if (!options.limits.active()) return {std::move(pieces), value};
+  const double paper_shortfall = cut_shortfall(pieces, options.limits, one_strip);
+  if (paper_shortfall == 0.0) return {std::move(pieces), value};
+  // The cut through the middle of the hole leaves a piece too narrow or too small (a hole
+  // near the part's end leaves a ring between them). Every iso-value of f between the hole's
+  // extremes goes through the hole too, and so do those of the field across the part: the
+  // first that meets the limits replaces it, or else the one falling least short, if it falls
+  // far less short (limit_gain, as in cut_through_witness).
+  WitnessCut best;
+  double best_shortfall = std::numeric_limits<double>::infinity();
+  // Iso-values of `field` at these shares of its range over the hole's loop: each goes
+  // through the hole. True when one meets the limits (it is then `best`).
+  const auto through_hole = [&](const Eigen::VectorXd& field, bool across,
+                                std::initializer_list<double> shares) {
+    double low = field[loop.front()], high = low;
+    for (int v : loop) low = std::min(low, field[v]), high = std::max(high, field[v]);
+    for (const double t : shares) {
+      const double near = low + t * (high - low);
+      std::vector<Mesh> moved = cut_along_isoline(part, field, near, options.cut);
+      if (!makes_progress(part, moved, area, options.min_piece_fraction)) continue;
+      const double shortfall = cut_shortfall(moved, options.limits, one_strip);
+      if (shortfall < best_shortfall)
+        best = {std::move(moved), near, across}, best_shortfall = shortfall;
+      if (shortfall == 0.0) return true;
+    }
+    return false;
+  };
+  if (through_hole(f, false, {0.3, 0.7, 0.1, 0.9})) return best;
+  // Across the part (the field between its farthest vertices), through the hole.
+  const auto [from, to] = farthest_vertex_pair(part, 4);
+  if (from != to) {
+    const Eigen::VectorXd g = harmonic_field(part, {from}, {to}, options.harmonic);
+    if (through_hole(g, true, {0.5, 0.3, 0.7, 0.1, 0.9})) return best;
+  }
+  if (!best.pieces.empty() && best_shortfall <= options.limit_gain * paper_shortfall) return best;
+  return {std::move(pieces), value};
 }
 
 }  // namespace papercraft

@@ -73,7 +73,10 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
                                const WitnessCutOptions& options = {},
                                const OneStrip& one_strip = {});
 
-/// Cuts `part` through the hole `loop` (iso-line of f between its extremes on the hole).
+/// Cuts `part` through the hole `loop`: the iso-line of f halfway between its extremes on the
+/// hole. With limits, where that leaves a piece falling short of them, other iso-values
+/// through the hole (of f, then of the field between the part's farthest vertices, at shares
+/// of their range over the loop) are tried, judged by cut_shortfall with `one_strip`.
 WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
                             const std::vector<int>& second, const std::vector<int>& loop,
                             const WitnessCutOptions& options = {}, const OneStrip& one_strip = {});

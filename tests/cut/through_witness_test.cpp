@@ -76,5 +76,78 @@ TEST(CutShortfall, PieceTooSmallToCutAgainMustBeOneStrip) {
   EXPECT_EQ(asked, 3);
 }
 
+// An open tube of radius 1 and length 10 round the z axis, in rings 0.1 apart, with a hole
+// near its lower end: the faces of the rings from z = 0.2 to 1.2 within 30 degrees of the x
+// axis taken out.
+TriangleMesh tube_with_hole_near_end() {
+  constexpr int kAround = 48, kRings = 100;
+  TriangleMesh tube;
+  for (int r = 0; r <= kRings; ++r)
+    for (int i = 0; i < kAround; ++i) {
+      const double angle = 2.0 * kPi * i / kAround;
+      tube.vertices.emplace_back(std::cos(angle), std::sin(angle), 0.1 * r);
+    }
+  for (int r = 0; r < kRings; ++r)
+    for (int i = 0; i < kAround; ++i) {
+      const double angle = 2.0 * kPi * (i + 0.5) / kAround;
+      const double z = 0.1 * (r + 0.5);
+      if (z > 0.2 && z < 1.2 && std::abs(std::remainder(angle, 2.0 * kPi)) < kPi / 6) continue;
+      const int j = (i + 1) % kAround;
+      const int a = r * kAround + i, b = r * kAround + j;
+      tube.triangles.push_back({a, b, b + kAround});
+      tube.triangles.push_back({a, b + kAround, a + kAround});
+    }
+  // The vertices inside the hole are on no face: drop them.
+  std::vector<int> index(tube.vertices.size(), -1);
+  TriangleMesh used;
+  for (auto& t : tube.triangles)
+    for (int& v : t) {
+      if (index[v] < 0)
+        index[v] = static_cast<int>(used.vertices.size()),
+        used.vertices.push_back(tube.vertices[v]);
+      v = index[v];
+    }
+  used.triangles = std::move(tube.triangles);
+  return used;
+}
+
+// The cut through a hole goes through the middle of it; where that leaves a piece under
+// min_area (the ring between the tube's end and the hole, about 4 here), another cut through
+// the hole (or across the part by it) that leaves none replaces it; and it opens the hole, so
+// that no piece keeps it (a piece with a third boundary loop would have to be cut again).
+TEST(CutThroughHole, AHoleNearTheEndLeavesNoCrumb) {
+  const Mesh part = to_mesh(tube_with_hole_near_end());
+  const auto loops = boundary_loops(part);
+  ASSERT_EQ(loops.size(), 3u);
+  // The ends are the loops at z = 0 and z = 10; the hole is the third.
+  std::vector<int> first, second, hole;
+  for (const auto& loop : loops) {
+    const double z = part.point(part.vertex_handle(loop.front()))[2];
+    if (loop.size() == 48 && z == 0.0)
+      first = loop;
+    else if (loop.size() == 48 && z > 9.9)
+      second = loop;
+    else
+      hole = loop;
+  }
+  ASSERT_FALSE(first.empty());
+  ASSERT_FALSE(second.empty());
+  ASSERT_FALSE(hole.empty());
+  WitnessCutOptions options;
+  const WitnessCut middle = cut_through_hole(part, first, second, hole, options);
+  ASSERT_EQ(middle.pieces.size(), 2u) << "without limits: through the middle of the hole";
+  double smallest = 1e9;
+  for (const Mesh& piece : middle.pieces) smallest = std::min(smallest, surface_area(piece));
+  ASSERT_LT(smallest, 5.0) << "the ring below the hole";
+  options.limits.min_area = 5.0;
+  const WitnessCut cut = cut_through_hole(part, first, second, hole, options);
+  ASSERT_GE(cut.pieces.size(), 2u);
+  for (const Mesh& piece : cut.pieces) {
+    EXPECT_GE(surface_area(piece), 5.0);
+    EXPECT_LE(boundary_loops(piece).size(), 2u) << "the hole is still in a piece";
+  }
+  EXPECT_EQ(cut_shortfall(cut.pieces, options.limits), 0.0);
+}
+
 }  // namespace
 }  // namespace papercraft
