@@ -347,10 +347,12 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips, const Merg
 namespace {
 
 // Single-edge hinges of the pairs `wanted` picks, the longest first:
-// (pair index, edge) over shared_boundaries(strips).
+// (pair index, edge) over shared_boundaries(strips), and whether the edge is at an end of an
+// open chain (the chain's other edges then all lie on one side of it).
 struct Hinge {
   int pair;
   Chain edge;
+  bool chain_end = false;
 };
 
 std::vector<Hinge> hinges_of(const std::vector<PairCandidate>& pairs,
@@ -366,7 +368,8 @@ std::vector<Hinge> hinges_of(const std::vector<PairCandidate>& pairs,
         edge.x = {chain.x[i], chain.x[i + 1]};
         edge.y = {chain.y[i], chain.y[i + 1]};
         edge.length = (x.vertices3d[chain.x[i + 1]] - x.vertices3d[chain.x[i]]).norm();
-        hinges.push_back({p, std::move(edge)});
+        const bool open = chain.x.front() != chain.x.back();
+        hinges.push_back({p, std::move(edge), open && (i == 0 || i + 2 == chain.x.size())});
       }
   }
   std::stable_sort(hinges.begin(), hinges.end(),
@@ -1032,22 +1035,39 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
 
 namespace {
 
-// Strip `s` hinged whole onto a neighbour: over their shared edges, the longest first, the
-// first union that overlaps nowhere replaces the lower index of the two and the other is
-// erased. False (strips unchanged) when no hinge lays it flat.
-bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& options) {
+// Strip `s` hinged whole onto a neighbour over one shared edge, where the union overlaps
+// nowhere: the union replaces the lower index of the two and the other is erased. Edges are
+// tried those at an end of an open shared chain first, then the longest; of the first that
+// lays it flat and the kMostWholeHinges tried after it, the one leaving the least slit
+// (slit_points at `slit_width`; the earlier on a tie) is kept: a hinge in the middle of a chain
+// that does not weld opens a thin wedge on both sides of it, one at its end only on one.
+// `slit_width` <= 0: the first that lays it flat. False (strips unchanged) when no hinge lays
+// it flat.
+bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& options,
+                 double slit_width) {
+  constexpr int kMostWholeHinges = 16;
   const std::vector<PairCandidate> pairs = shared_boundaries(strips, s);
-  const auto hinges = hinges_of(
-      pairs, strips, [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
+  auto hinges = hinges_of(pairs, strips,
+                          [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
+  std::stable_partition(hinges.begin(), hinges.end(), [](const Hinge& h) { return h.chain_end; });
+  FlatStrip best;
+  int best_pair = -1, best_slit = 0, tried = 0;
   for (const Hinge& hinge : hinges) {
+    if (best_pair >= 0 && (slit_width <= 0.0 || ++tried > kMostWholeHinges)) break;
     const PairCandidate& pair = pairs[hinge.pair];
     FlatStrip merged;
     if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
-    strips[pair.x] = std::move(merged);
-    strips.erase(strips.begin() + pair.y);
-    return true;
+    const int slit =
+        slit_width > 0.0 ? slit_points(merged, strips[pair.x].vertices2d.size(), slit_width) : 0;
+    if (best_pair >= 0 && slit >= best_slit) continue;
+    best = std::move(merged), best_pair = hinge.pair, best_slit = slit;
+    if (slit == 0) break;
   }
-  return false;
+  if (best_pair < 0) return false;
+  const PairCandidate& pair = pairs[best_pair];
+  strips[pair.x] = std::move(best);
+  strips.erase(strips.begin() + pair.y);
+  return true;
 }
 
 // The index of the smallest strip of less than `bound` whose id is not in `given_up`, or -1.
@@ -1076,8 +1096,8 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     // The smallest strip still to place.
     const int small = smallest_below(strips, min_area, given_up);
     if (small < 0) break;
-    // Its shared boundaries, as single edges, the longest first: the hinge it folds over.
-    bool joined = hinge_whole(strips, small, options);
+    // Hinged whole over one of its shared edges, the one leaving the least slit.
+    bool joined = hinge_whole(strips, small, options, min_width);
     if (!joined) joined = absorb_by_triangles(strips, small, options);
     if (!joined && min_width > 0.0) {
       // Cut in two, each half hinged onto a neighbour that gets no narrower than it was (or
@@ -1201,7 +1221,7 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
 }
 
 std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double below_area,
-                                           const MergeOptions& options) {
+                                           const MergeOptions& options, double min_width) {
   validate(strips, options);
   if (!(below_area > 0.0)) return strips;
   for (FlatStrip& strip : strips) strip.boundary = flat_boundary(strip.triangles);
@@ -1209,7 +1229,7 @@ std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double
   while (true) {
     const int modest = smallest_below(strips, below_area, given_up);
     if (modest < 0) break;
-    if (!hinge_whole(strips, modest, options)) given_up.insert(strips[modest].id);
+    if (!hinge_whole(strips, modest, options, min_width)) given_up.insert(strips[modest].id);
   }
   label_seams(strips);
   return strips;
@@ -1225,7 +1245,8 @@ std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strip
   if (!small.empty())
     strips = join_small_strips(std::move(strips), min_area, options, &small, min_width);
   if (options.modest_join_factor > 1.0)
-    strips = hinge_modest_strips(std::move(strips), options.modest_join_factor * min_area, options);
+    strips = hinge_modest_strips(std::move(strips), options.modest_join_factor * min_area, options,
+                                 min_width);
   if (left) {
     // The crumbs left are those of `small` still under min_area (a hinge above may have
     // joined one).

@@ -55,25 +55,28 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 
 /// Joins each flat strip of less than `min_area` (model units squared) to a neighbour, the
 /// smallest first: Y moved rigidly so that one edge it shares with X lies on X's image of it
-/// (the longest shared edge first; lengths agree, the strips being isometric), kept where the
-/// union overlaps nowhere. The joined piece folds over that edge (a hinge); its other shared
-/// edges become seams of the union with itself, glued as any seam. Merged strips keep the
-/// lower index's id and frame, as in merge_congruent. A small strip that no neighbour takes
-/// whole (every hinge lays it over the neighbour: at a saddle the gap in the plane is
-/// narrower than the strip) is taken apart into its triangles (at most 64), each folded out
-/// of a neighbour over one of its edges, longest first; a triangle next to its siblings only
-/// waits for one of them to be taken. That is kept only when every triangle finds a place and
-/// at most one edge between two of its triangles is opened (each one a new seam to glue,
-/// often tiny and in a notch without room for a tab). A small strip that cannot be taken
-/// apart (more than 64 triangles, or more edges opened) is cut in two (or three) across its inner
-/// edges, each part hinged onto a neighbour (join_narrow_strips' cut, with no neighbour getting
-/// narrower than `min_width` over more than options.narrow_join_share of its area or than it
-/// was; `min_width` 0: not tried). One that cannot be cut either grows instead: it takes its
-/// neighbours' triangles that share an edge with it, one at a time (of those that find a place, the
-/// one leaving it most compact: the least squared perimeter per area in the plane), each folded out
-/// of it over the edges it shares, until it reaches `min_area`; a triangle takes with it what its
-/// neighbour held only through it (the end of a ruled strip beyond it), so the neighbour stays one
-/// piece. It is taken only where it lands on no other triangle of the strip, every edge shared
+/// (lengths agree, the strips being isometric), kept where the union overlaps nowhere. Edges
+/// are tried those at an end of an open shared chain first, then the longest; with `min_width`
+/// > 0, of the first that lays it flat and the 16 tried after it, the one whose union leaves
+/// the fewest shared points closer than `min_width` in the plane (a slit: a hinge in the middle
+/// of a chain that does not weld opens a thin wedge on both sides of it), else the first. The
+/// joined piece folds over that edge (a hinge); its other shared edges become seams of the union
+/// with itself, glued as any seam. Merged strips keep the lower index's id and frame, as in
+/// merge_congruent. A small strip that no neighbour takes whole (every hinge lays it over the
+/// neighbour: at a saddle the gap in the plane is narrower than the strip) is taken apart into its
+/// triangles (at most 64), each folded out of a neighbour over one of its edges, longest first; a
+/// triangle next to its siblings only waits for one of them to be taken. That is kept only when
+/// every triangle finds a place and at most one edge between two of its triangles is opened (each
+/// one a new seam to glue, often tiny and in a notch without room for a tab). A small strip that
+/// cannot be taken apart (more than 64 triangles, or more edges opened) is cut in two (or three)
+/// across its inner edges, each part hinged onto a neighbour (join_narrow_strips' cut, with no
+/// neighbour getting narrower than `min_width` over more than options.narrow_join_share of its area
+/// or than it was; `min_width` 0: not tried). One that cannot be cut either grows instead: it takes
+/// its neighbours' triangles that share an edge with it, one at a time (of those that find a place,
+/// the one leaving it most compact: the least squared perimeter per area in the plane), each folded
+/// out of it over the edges it shares, until it reaches `min_area`; a triangle takes with it what
+/// its neighbour held only through it (the end of a ruled strip beyond it), so the neighbour stays
+/// one piece. It is taken only where it lands on no other triangle of the strip, every edge shared
 /// welds (no slit) and the neighbour keeps at least `min_area`. It grows until it reaches
 /// `min_area` and neither it nor a neighbour it took from is narrower than `min_width` over more
 /// than options.narrow_join_share of its area (or than before; `min_width` 0: not checked): past
@@ -124,8 +127,8 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
                                           int most_hinges = 256, double min_area = 0.0);
 
 /// Hinges each flat strip of less than `below_area` onto a neighbour, the smallest first, as
-/// join_small_strips hinges a crumb (its shared edges the longest first, the first union that
-/// overlaps nowhere kept). Fewer pieces to cut: a piece a few square centimetres large folds
+/// join_small_strips hinges a crumb (the hinge that lays it flat leaving the least slit at
+/// `min_width`; 0: the first). Fewer pieces to cut: a piece a few square centimetres large folds
 /// onto its neighbour, its other shared edges becoming seams of the union with itself. No width
 /// check is needed: a disc inside either piece lies inside the union, so the union is narrow
 /// over at most the two pieces' narrow areas, a share no larger than the larger of theirs. A
@@ -133,7 +136,8 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
 /// label_seams runs.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double below_area,
-                                           const MergeOptions& options = {});
+                                           const MergeOptions& options = {},
+                                           double min_width = 0.0);
 
 /// The merge node's joins after merge_congruent: join_small_strips, then join_narrow_strips
 /// (at most 256 hinges a strip), then join_small_strips once more where crumbs were left, since

@@ -432,7 +432,9 @@ TEST(Pieces, LabelsArrangedInAnEarlierTryOfTheLayoutNameTheirOwnPieceAndSeam) {
 // along its ridges and fans of long thin triangles, each with tabs on every side. The merge
 // now folds such pieces out of a wider neighbour: run with that turned off
 // (narrow_join_share: 1) and on, the narrow pieces fall to at most one and the pieces by a
-// fifth, and the seams still meet exactly.
+// fifth, and the seams still meet exactly. (With the narrow joins off it now prints 2 narrow
+// pieces, not 3: the crumbs are hinged where they leave the least slit, so the pieces the
+// narrow joins start from differ.)
 TEST(Pieces, NarrowStripsAreFoldedOutOfANeighbourOnThreePeaks) {
   const auto meshes = libcgal_demo_meshes({"three_peaks"});
   if (meshes.empty()) GTEST_SKIP() << "libcgal-demo is not installed";
@@ -441,8 +443,9 @@ TEST(Pieces, NarrowStripsAreFoldedOutOfANeighbourOnThreePeaks) {
   const auto after = run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks");
   ASSERT_TRUE(before.result.ok) << before.result.error;
   ASSERT_TRUE(after.result.ok) << after.result.error;
-  EXPECT_GE(narrow_pieces(before).size(), 3u);
+  EXPECT_GE(narrow_pieces(before).size(), 2u);
   EXPECT_LE(narrow_pieces(after).size(), 1u);
+  EXPECT_LT(narrow_pieces(after).size(), narrow_pieces(before).size());
   EXPECT_LE(after.flat.at("strips").size(), 0.8 * before.flat.at("strips").size());
   expect_exact_seams(after);
 }

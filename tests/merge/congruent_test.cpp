@@ -509,11 +509,9 @@ TEST(JoinNarrowStrips, WallIsFoldedOutOfTheFloorItStandsOn) {
   EXPECT_EQ(join_narrow_strips({floor, wall}, width, 1.0).size(), 2u);
 }
 
-// A wall 0.2 high along three sides of a floor that bend by 10 and 90 degrees. Folded out over
-// either of the first two sides, the wall passes the 10-degree bend 0.7 from the floor's edge
-// (a slit, narrower than the width bound of 1, where no tab fits); over the third, the
-// shortest, it leaves the floor at the right angle. That hinge is chosen.
-TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
+// A floor a -> b -> c -> d whose sides bend by 10 and 90 degrees (4, 4 and 3 long), and a
+// wall 0.2 high standing on d -> c -> b -> a, unrolled straight.
+std::pair<FlatStrip, FlatStrip> bent_floor_and_wall() {
   const double h = 0.2, turn = 10.0 * std::acos(-1.0) / 180.0;
   const Vec2 a(0, 0), b(4, 0), c = b + 4.0 * Vec2(std::cos(turn), std::sin(turn));
   const Vec2 d = c + 3.0 * Vec2(-std::sin(turn), std::cos(turn));
@@ -524,6 +522,15 @@ TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
   for (const Vec2& p : floor.vertices2d) floor.vertices3d.push_back(lift(p, 0));
   floor.triangles = {{0, 1, 2}, {0, 2, 3}};
   const FlatStrip wall = straight_wall({lift(d, 0), lift(c, 0), lift(b, 0), lift(a, 0)}, h);
+  return {floor, wall};
+}
+
+// A wall 0.2 high along three sides of a floor that bend by 10 and 90 degrees. Folded out over
+// either of the first two sides, the wall passes the 10-degree bend 0.7 from the floor's edge
+// (a slit, narrower than the width bound of 1, where no tab fits); over the third, the
+// shortest, it leaves the floor at the right angle. That hinge is chosen.
+TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
+  const auto [floor, wall] = bent_floor_and_wall();
   const auto joined = join_wall_to_floor(floor, wall, 1.0);
   ASSERT_EQ(joined.size(), 1u);
   // Welded at c and d (the floor's points 2 and 3): 4 + 8 - 2 points, and the wall's first
@@ -532,6 +539,36 @@ TEST(JoinNarrowStrips, HingeThatLeavesNoSlitIsChosen) {
   ASSERT_EQ(joined[0].triangles.size(), 8u);
   EXPECT_EQ(joined[0].triangles[2][0], 3);
   EXPECT_EQ(joined[0].triangles[2][1], 2);
+}
+
+// The floor and wall of HingeThatLeavesNoSlitIsChosen, the wall now a crumb (2.2 of area
+// against min_area 5): join_small_strips folds it out over the floor's shortest side, where it
+// leaves the floor at the right angle, and not over the longer side at the other end of the
+// chain, the first hinge that lays it flat, where it passes the 10-degree bend 0.7 from the
+// floor's edge (a slit, where no tab fits). Without a width to measure the slit by, that first
+// hinge is kept.
+TEST(JoinSmallStrips, CrumbIsHingedWhereItLeavesNoSlit) {
+  const auto [floor, wall] = bent_floor_and_wall();
+  const std::vector<FlatStrip> strips = merge_congruent({floor, wall});
+  ASSERT_EQ(strips.size(), 2u);
+  ASSERT_LT(area_of(strips[1]), 5.0);
+  std::vector<int> left;
+  const auto joined = join_small_strips(strips, 5.0, {}, &left, 1.0);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_TRUE(left.empty());
+  expect_valid(joined);
+  // Welded at c and d (the floor's points 2 and 3): the wall's first triangle uses them.
+  EXPECT_EQ(joined[0].vertices2d.size(), 10u);
+  ASSERT_EQ(joined[0].triangles.size(), 8u);
+  EXPECT_EQ(joined[0].triangles[2][0], 3);
+  EXPECT_EQ(joined[0].triangles[2][1], 2);
+
+  // Width 0: the first hinge, b -> a (an end of the chain, and longer): welded at a and b.
+  const auto first = join_small_strips(strips, 5.0, {}, &left, 0.0);
+  ASSERT_EQ(first.size(), 1u);
+  ASSERT_EQ(first[0].triangles.size(), 8u);
+  EXPECT_EQ(first[0].triangles[6][1], 0);
+  EXPECT_EQ(first[0].triangles[7][0], 1);
 }
 
 // Two walls 0.2 high stacked on one side of a 4 x 4 floor, the upper one first in the order.
