@@ -4,20 +4,26 @@
 // seam can fail to meet (tests/support/pattern_checks.h), then the totals. "narrow alone" and
 // "small alone" count those that are a separate part of the input by themselves (a narrow
 // strip glued to no other, a small one whose whole part is under the area bound): no join
-// can widen or grow them. "slivers" (the last column) counts the pieces holding one connected
+// can widen or grow them. "slivers" counts the pieces holding one connected
 // region narrower than --narrow-mm of more than --sliver-mm2, whatever its share of the piece:
-// a thin band glued on along a large piece.
+// a thin band glued on along a large piece. "self seams" counts the labels of seams of a piece
+// with itself (a closed strip opened along a ruling, and a piece hinged onto a neighbour along
+// one edge of a longer shared chain: the chain's other edges), "most self" the most on one
+// piece (in the totals, the most on any piece): a cluster of them is a tangle of short seams,
+// each with its label, to glue by hand.
 //
 //   piece_quality OUT/eight OUT/cactus ...            # model folders
 //   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 --sliver-mm2 100 OUT/*/
 //
 // Exit status 0 (findings are data), 2 for a bad command line or unreadable folder.
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,6 +31,22 @@
 #include "support/pattern_checks.h"
 
 namespace {
+
+// The labels of seams of each strip with itself: their number over the model, and the most on
+// one strip.
+std::pair<long, long> self_seams(const nlohmann::json& strips) {
+  long all = 0, most = 0;
+  for (const auto& strip : strips) {
+    const int id = strip.at("id").get<int>();
+    std::set<std::string> labels;
+    for (const auto& edge : strip.at("boundary"))
+      if (edge.at("kind") == "seam" && edge.at("neighbour").get<int>() == id)
+        labels.insert(edge.at("label").get<std::string>());
+    all += static_cast<long>(labels.size());
+    most = std::max(most, static_cast<long>(labels.size()));
+  }
+  return {all, most};
+}
 
 nlohmann::json read_json(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -76,9 +98,10 @@ int main(int argc, char** argv) {
   std::printf(
       "| model | pieces | narrow | narrow alone | small | small alone | seam edges | no partner | "
       "length differs | other label | labels | not two chains | sides differ | "
-      "notes unmatched | slivers |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-  long total[14] = {};
+      "notes unmatched | slivers | self seams | most self |\n");
+  std::printf(
+      "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  long total[16] = {};
   for (const auto& dir : models) {
     nlohmann::json strips, report;
     try {
@@ -94,7 +117,8 @@ int main(int argc, char** argv) {
     const auto seams = papercraft::testing::check_seams(strips);
     const int unmatched_notes =
         count_notes(report, "ends do not match") + count_notes(report, "has no partner edge");
-    const long row[14] = {pieces.pieces,
+    const auto [self, most_self] = self_seams(strips);
+    const long row[16] = {pieces.pieces,
                           pieces.narrow,
                           pieces.narrow_alone,
                           pieces.small,
@@ -107,21 +131,24 @@ int main(int argc, char** argv) {
                           seams.labels_not_two_chains,
                           seams.labels_with_sides_differing,
                           unmatched_notes,
-                          pieces.slivers};
-    for (int k = 0; k < 14; ++k) total[k] += row[k];
+                          pieces.slivers,
+                          self,
+                          most_self};
+    for (int k = 0; k < 15; ++k) total[k] += row[k];
+    total[15] = std::max(total[15], row[15]);
     std::printf(
         "| %s | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld "
-        "|\n",
+        "| %ld | %ld |\n",
         dir.filename().empty() ? dir.parent_path().filename().c_str() : dir.filename().c_str(),
         row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9], row[10],
-        row[11], row[12], row[13]);
+        row[11], row[12], row[13], row[14], row[15]);
     for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }
   std::printf(
       "| **total** | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld "
-      "| %ld |\n",
+      "| %ld | %ld | %ld |\n",
       total[0], total[1], total[2], total[3], total[4], total[5], total[6], total[7], total[8],
-      total[9], total[10], total[11], total[12], total[13]);
+      total[9], total[10], total[11], total[12], total[13], total[14], total[15]);
   return 0;
 }
