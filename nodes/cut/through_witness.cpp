@@ -161,7 +161,8 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
 
 WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
                             const std::vector<int>& second, const std::vector<int>& loop,
-                            const WitnessCutOptions& options, const OneStrip& one_strip) {
+                            const WitnessCutOptions& options, const OneStrip& one_strip,
+                            const HoleCount& holes) {
   const double area = surface_area(part);
   const Eigen::VectorXd f = harmonic_field(part, first, second, options.harmonic);
   const double value = hole_split_value(f, loop);
@@ -181,6 +182,13 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
   // extremes goes through the hole too, and so do those of the field across the part: the
   // first that meets the limits replaces it, or else the one falling least short, if it falls
   // far less short (limit_gain, as in cut_through_witness).
+  // An iso-value away from the middle can cross the loop and still leave the hole in a piece.
+  const auto holes_in = [&](const std::vector<Mesh>& cut) {
+    int count = 0;
+    for (const Mesh& piece : cut) count += holes(piece);
+    return count;
+  };
+  const int middle_holes = holes ? holes_in(pieces) : 0;
   WitnessCut best;
   double best_shortfall = std::numeric_limits<double>::infinity();
   // Iso-values of `field` at these shares of its range over the hole's loop: each goes
@@ -193,6 +201,7 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
       const double near = low + t * (high - low);
       std::vector<Mesh> moved = cut_along_isoline(part, field, near, options.cut);
       if (!makes_progress(part, moved, area, options.min_piece_fraction)) continue;
+      if (holes && holes_in(moved) > middle_holes) continue;
       const double shortfall = cut_shortfall(moved, options.limits, one_strip);
       if (shortfall < best_shortfall)
         best = {std::move(moved), near, across}, best_shortfall = shortfall;

@@ -42,6 +42,11 @@ struct WitnessCutOptions {
 /// not one; an empty function: not known.
 using OneStrip = std::function<std::optional<double>(const Mesh&)>;
 
+/// How many holes a piece has, as the refinement sees them: boundary loops that are not its
+/// strip's two boundaries (select_strip_boundaries' holes, refine.h), each of which it must
+/// cut through again.
+using HoleCount = std::function<int(const Mesh&)>;
+
 /// piece_shortfall of `piece` against `limits`, looking ahead with `one_strip` where given, for
 /// a piece of min_area to twice min_area (on the surface):
 /// - one that is not one strip will be cut again (or split by the unfolding) into pieces that
@@ -76,9 +81,13 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
 /// Cuts `part` through the hole `loop`: the iso-line of f halfway between its extremes on the
 /// hole. With limits, where that leaves a piece falling short of them, other iso-values
 /// through the hole (of f, then of the field between the part's farthest vertices, at shares
-/// of their range over the loop) are tried, judged by cut_shortfall with `one_strip`.
+/// of their range over the loop) are tried, judged by cut_shortfall with `one_strip`. With
+/// `holes`, one whose pieces hold more holes than the middle cut's is passed over: its
+/// iso-line crosses the loop but also runs round the part elsewhere, so the hole stays in a
+/// piece, which is cut again (femur at 2%: into a 12 mm^2 cap no neighbour takes).
 WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
                             const std::vector<int>& second, const std::vector<int>& loop,
-                            const WitnessCutOptions& options = {}, const OneStrip& one_strip = {});
+                            const WitnessCutOptions& options = {}, const OneStrip& one_strip = {},
+                            const HoleCount& holes = {});
 
 }  // namespace papercraft

@@ -93,10 +93,14 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
   RefineOptions quick = options;
   quick.decide.bounded.locate_maximum = false;  // the decision only
   auto one_strip = [&](const Mesh& piece) { return one_flat_strip_area(piece, tolerance, quick); };
+  // And how many holes would a piece have, each to be cut through again?
+  auto holes = [&](const Mesh& piece) {
+    return static_cast<int>(select_strip_boundaries(piece, tolerance, quick).holes.size());
+  };
   WitnessCut cut =
       cut_rejected_part(part, boundaries.first, boundaries.first_closed, boundaries.second,
                         boundaries.second_closed, hole, verdict.witness, tolerance, options.cut,
-                        options.twist, options.decide, limits, one_strip);
+                        options.twist, options.decide, limits, one_strip, holes);
   if (spdlog::should_log(spdlog::level::debug)) {
     std::string shortfalls;
     for (const Mesh& piece : cut.pieces)

@@ -9,7 +9,7 @@ WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bo
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
                              const RejectedCutOptions& options, const TwistOptions& twist,
                              const DecideOptions& decide, const PieceLimits& limits,
-                             const OneStrip& one_strip) {
+                             const OneStrip& one_strip, const HoleCount& holes) {
   WitnessCutOptions cut_options = options.cut;
   cut_options.limits = limits;
   cut_options.cut.snap_distance = options.snap_tolerance * tolerance;
@@ -28,7 +28,7 @@ WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bo
   WitnessCut cut;
   if (search) cut = maximal_strip(options.search_min_fraction);
   if (cut.pieces.empty()) {
-    cut = hole ? cut_through_hole(part, first, second, *hole, cut_options, one_strip)
+    cut = hole ? cut_through_hole(part, first, second, *hole, cut_options, one_strip, holes)
                : cut_through_witness(part, first, second, witness, cut_options, one_strip);
   }
   // No iso-line through the worst point splits the part: a thin strip next to a boundary is

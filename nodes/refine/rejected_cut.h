@@ -34,12 +34,13 @@ struct RejectedCutOptions {
 /// than they allow where another iso-value would not (through_witness.h); the search keeps
 /// only strips whose pieces meet them. `one_strip`, where given, looks ahead: a piece under
 /// twice min_area must be one strip that reaches min_area on paper (cut_shortfall,
-/// through_witness.h).
+/// through_witness.h). `holes`, where given, counts a piece's holes: a cut through `hole` that
+/// leaves more of them than the cut through its middle is not taken (cut_through_hole).
 WitnessCut cut_rejected_part(const Mesh& part, const std::vector<int>& first, bool first_closed,
                              const std::vector<int>& second, bool second_closed,
                              const std::vector<int>* hole, const Vec3& witness, double tolerance,
                              const RejectedCutOptions& options, const TwistOptions& twist,
                              const DecideOptions& decide, const PieceLimits& limits = {},
-                             const OneStrip& one_strip = {});
+                             const OneStrip& one_strip = {}, const HoleCount& holes = {});
 
 }  // namespace papercraft

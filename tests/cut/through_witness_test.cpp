@@ -149,5 +149,38 @@ TEST(CutThroughHole, AHoleNearTheEndLeavesNoCrumb) {
   EXPECT_EQ(cut_shortfall(cut.pieces, options.limits), 0.0);
 }
 
+// With a count of holes, a cut through the hole whose pieces hold more of them than the
+// middle cut's is passed over (its iso-line crosses the loop and also runs round the part
+// elsewhere, leaving the hole in a piece). Here a stand-in count says every piece of 5 to 20
+// (the ring any other cut through this hole leaves by the end, with the limits met) keeps a
+// hole: each such cut is passed over, and the middle cut stays, crumb and all.
+TEST(CutThroughHole, ACutThatLeavesAHoleInAPieceIsPassedOver) {
+  const Mesh part = to_mesh(tube_with_hole_near_end());
+  std::vector<int> first, second, hole;
+  for (const auto& loop : boundary_loops(part)) {
+    const double z = part.point(part.vertex_handle(loop.front()))[2];
+    (loop.size() == 48 && z == 0.0 ? first : loop.size() == 48 && z > 9.9 ? second : hole) = loop;
+  }
+  ASSERT_FALSE(first.empty() || second.empty() || hole.empty());
+  WitnessCutOptions options;
+  const WitnessCut middle = cut_through_hole(part, first, second, hole, options);
+  options.limits.min_area = 5.0;
+  int asked = 0;
+  const HoleCount holes = [&](const Mesh& piece) {
+    ++asked;
+    const double area = surface_area(piece);
+    return area >= 5.0 && area < 20.0 ? 1 : 0;
+  };
+  const WitnessCut kept = cut_through_hole(part, first, second, hole, options, {}, holes);
+  EXPECT_GT(asked, 2) << "the middle cut's pieces and another cut's";
+  EXPECT_EQ(kept.value, middle.value);
+  EXPECT_EQ(kept.pieces.size(), middle.pieces.size());
+  // Counting no holes, the other cut is taken (AHoleNearTheEndLeavesNoCrumb).
+  const WitnessCut moved =
+      cut_through_hole(part, first, second, hole, options, {}, [](const Mesh&) { return 0; });
+  EXPECT_NE(moved.value, middle.value);
+  EXPECT_EQ(cut_shortfall(moved.pieces, options.limits), 0.0);
+}
+
 }  // namespace
 }  // namespace papercraft
