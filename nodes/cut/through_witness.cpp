@@ -181,8 +181,10 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
   // near the part's end leaves a ring between them). Every iso-value of f between the hole's
   // extremes goes through the hole too, and so do those of the field across the part: the
   // first that meets the limits replaces it, or else the one falling least short, if it falls
-  // far less short (limit_gain, as in cut_through_witness).
-  // An iso-value away from the middle can cross the loop and still leave the hole in a piece.
+  // far less short (limit_gain, as in cut_through_witness). An iso-value away from the middle
+  // can cross the loop and still leave the hole in a piece: with `holes`, a cut whose pieces
+  // hold more than the middle cut's is passed over (counted only for a cut that would be kept,
+  // as counting selects each piece's strip boundaries).
   const auto holes_in = [&](const std::vector<Mesh>& cut) {
     int count = 0;
     for (const Mesh& piece : cut) count += holes(piece);
@@ -201,10 +203,10 @@ WitnessCut cut_through_hole(const Mesh& part, const std::vector<int>& first,
       const double near = low + t * (high - low);
       std::vector<Mesh> moved = cut_along_isoline(part, field, near, options.cut);
       if (!makes_progress(part, moved, area, options.min_piece_fraction)) continue;
-      if (holes && holes_in(moved) > middle_holes) continue;
       const double shortfall = cut_shortfall(moved, options.limits, one_strip);
-      if (shortfall < best_shortfall)
-        best = {std::move(moved), near, across}, best_shortfall = shortfall;
+      if (!(shortfall < best_shortfall)) continue;
+      if (holes && holes_in(moved) > middle_holes) continue;
+      best = {std::move(moved), near, across}, best_shortfall = shortfall;
       if (shortfall == 0.0) return true;
     }
     return false;

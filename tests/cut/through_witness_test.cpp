@@ -111,28 +111,36 @@ TriangleMesh tube_with_hole_near_end() {
   return used;
 }
 
+// The tube with a hole near its end, with its boundary loops: the ends at z = 0 and z = 10
+// (first and second) and the hole.
+struct TubeWithHole {
+  Mesh part;
+  std::vector<int> first, second, hole;
+};
+TubeWithHole tube_and_loops() {
+  TubeWithHole tube{to_mesh(tube_with_hole_near_end()), {}, {}, {}};
+  const auto loops = boundary_loops(tube.part);
+  EXPECT_EQ(loops.size(), 3u);
+  for (const auto& loop : loops) {
+    const double z = tube.part.point(tube.part.vertex_handle(loop.front()))[2];
+    if (loop.size() == 48 && z == 0.0)
+      tube.first = loop;
+    else if (loop.size() == 48 && z > 9.9)
+      tube.second = loop;
+    else
+      tube.hole = loop;
+  }
+  EXPECT_FALSE(tube.first.empty() || tube.second.empty() || tube.hole.empty());
+  return tube;
+}
+
 // The cut through a hole goes through the middle of it; where that leaves a piece under
 // min_area (the ring between the tube's end and the hole, about 4 here), another cut through
 // the hole (or across the part by it) that leaves none replaces it; and it opens the hole, so
 // that no piece keeps it (a piece with a third boundary loop would have to be cut again).
 TEST(CutThroughHole, AHoleNearTheEndLeavesNoCrumb) {
-  const Mesh part = to_mesh(tube_with_hole_near_end());
-  const auto loops = boundary_loops(part);
-  ASSERT_EQ(loops.size(), 3u);
-  // The ends are the loops at z = 0 and z = 10; the hole is the third.
-  std::vector<int> first, second, hole;
-  for (const auto& loop : loops) {
-    const double z = part.point(part.vertex_handle(loop.front()))[2];
-    if (loop.size() == 48 && z == 0.0)
-      first = loop;
-    else if (loop.size() == 48 && z > 9.9)
-      second = loop;
-    else
-      hole = loop;
-  }
-  ASSERT_FALSE(first.empty());
-  ASSERT_FALSE(second.empty());
-  ASSERT_FALSE(hole.empty());
+  const auto [part, first, second, hole] = tube_and_loops();
+  ASSERT_FALSE(first.empty() || second.empty() || hole.empty());
   WitnessCutOptions options;
   const WitnessCut middle = cut_through_hole(part, first, second, hole, options);
   ASSERT_EQ(middle.pieces.size(), 2u) << "without limits: through the middle of the hole";
@@ -155,12 +163,7 @@ TEST(CutThroughHole, AHoleNearTheEndLeavesNoCrumb) {
 // (the ring any other cut through this hole leaves by the end, with the limits met) keeps a
 // hole: each such cut is passed over, and the middle cut stays, crumb and all.
 TEST(CutThroughHole, ACutThatLeavesAHoleInAPieceIsPassedOver) {
-  const Mesh part = to_mesh(tube_with_hole_near_end());
-  std::vector<int> first, second, hole;
-  for (const auto& loop : boundary_loops(part)) {
-    const double z = part.point(part.vertex_handle(loop.front()))[2];
-    (loop.size() == 48 && z == 0.0 ? first : loop.size() == 48 && z > 9.9 ? second : hole) = loop;
-  }
+  const auto [part, first, second, hole] = tube_and_loops();
   ASSERT_FALSE(first.empty() || second.empty() || hole.empty());
   WitnessCutOptions options;
   const WitnessCut middle = cut_through_hole(part, first, second, hole, options);
