@@ -205,6 +205,28 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
     }
   }
   check_degenerate_triangles(soup, options, file);
+  if (options.repair) {
+    const DuplicateFaces duplicates = remove_duplicate_triangles(soup);
+    if (duplicates.copies > 0) {
+      loaded.repairs.push_back("removed " +
+                               counted(duplicates.copies, "duplicate face", "duplicate faces") +
+                               " (the same vertices as another face, facing the same way)");
+    }
+    if (duplicates.folds > 0) {
+      loaded.repairs.push_back("removed " + counted(duplicates.folds, "pair", "pairs") +
+                               " of faces on the same vertices facing opposite ways (a flap "
+                               "folded flat onto itself)");
+    }
+    if (soup.triangles.empty()) {
+      throw_invalid(file,
+                    "mesh has no faces left once the faces on the same vertices as another "
+                    "facing the other way are removed (a surface doubled back on itself)");
+    }
+    if (const std::size_t removed = remove_unreferenced_vertices(soup); removed > 0) {
+      loaded.repairs.push_back("removed " + counted(removed, "vertex", "vertices") +
+                               " used only by those faces");
+    }
+  }
   check_duplicate_triangles(soup, file);
   check_topology_and_orient(soup, options.repair, file, loaded.repairs);
 

@@ -228,6 +228,56 @@ void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,
   }
 }
 
+DuplicateFaces remove_duplicate_triangles(Soup& soup) {
+  // Triangles by their sorted corners, then by index: equal keys are adjacent.
+  std::vector<std::pair<Triangle3, int>> keys(soup.triangles.size());
+  for (std::size_t t = 0; t < keys.size(); ++t) {
+    keys[t] = {soup.triangles[t], static_cast<int>(t)};
+    std::sort(keys[t].first.begin(), keys[t].first.end());
+  }
+  std::sort(keys.begin(), keys.end());
+  // Whether triangle t runs through its sorted corners a < b < c in that cyclic order.
+  const auto ascending = [&](int t) {
+    const Triangle3& tri = soup.triangles[t];
+    const int low = tri[0] < tri[1] ? (tri[0] < tri[2] ? 0 : 2) : (tri[1] < tri[2] ? 1 : 2);
+    return tri[(low + 1) % 3] < tri[(low + 2) % 3];
+  };
+  DuplicateFaces removed;
+  std::vector<char> drop(soup.triangles.size(), 0);
+  for (std::size_t begin = 0, end = 0; begin < keys.size(); begin = end) {
+    end = begin + 1;
+    while (end < keys.size() && keys[end].first == keys[begin].first) ++end;
+    if (end - begin == 1) continue;
+    // The faces over one set of corners: as many facing each way cancel (folds, all dropped);
+    // otherwise the first facing the way most do is kept.
+    std::vector<int> up, down;
+    for (std::size_t i = begin; i < end; ++i)
+      (ascending(keys[i].second) ? up : down).push_back(keys[i].second);
+    const std::size_t folds = std::min(up.size(), down.size());
+    removed.folds += folds;
+    if (up.size() == down.size()) {
+      for (std::size_t i = begin; i < end; ++i) drop[keys[i].second] = 1;
+      continue;
+    }
+    const std::vector<int>& most = up.size() > down.size() ? up : down;
+    removed.copies += most.size() - 1 - folds;
+    for (std::size_t i = begin; i < end; ++i) drop[keys[i].second] = keys[i].second != most[0];
+  }
+  if (removed.copies + removed.folds == 0) return removed;
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    if (drop[t]) continue;
+    soup.triangles[kept] = soup.triangles[t];
+    soup.source_face[kept] = soup.source_face[t];
+    if (!soup.corner_uv.empty()) soup.corner_uv[kept] = soup.corner_uv[t];
+    ++kept;
+  }
+  soup.triangles.resize(kept);
+  soup.source_face.resize(kept);
+  if (!soup.corner_uv.empty()) soup.corner_uv.resize(kept);
+  return removed;
+}
+
 void check_duplicate_triangles(const Soup& soup, const std::string& file) {
   struct Key {
     Triangle3 sorted;

@@ -24,6 +24,17 @@ std::size_t merge_duplicate_vertices(Soup& soup, double epsilon);
 /// most options.degenerate_area_ratio times its longest edge squared.
 void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,
                                 const std::string& file);
+/// What remove_duplicate_triangles removed: `copies` repeat a face facing the same way;
+/// `folds` are pairs facing opposite ways (both removed).
+struct DuplicateFaces {
+  std::size_t copies = 0;
+  std::size_t folds = 0;
+};
+/// Removes triangles over the same three vertices as another: a copy facing the same way is
+/// dropped, and a pair facing opposite ways (a flap folded flat onto itself, of no area: two
+/// quads sharing three corners, each split into triangles, give one) is dropped whole. Of
+/// unequal numbers facing each way, the first facing the way most do is kept.
+DuplicateFaces remove_duplicate_triangles(Soup& soup);
 /// Throws InvalidInputException for two triangles over the same three vertices.
 void check_duplicate_triangles(const Soup& soup, const std::string& file);
 /// Throws InvalidInputException for non-manifold edges and non-orientable components, and without

@@ -656,9 +656,45 @@ TEST_F(LoadOpenMeshTest, DegenerateFaces) {
                                       {"1 degenerate face", "triangle 2"});
 }
 
-TEST_F(LoadOpenMeshTest, DuplicateFace) {
-  expect_error<InvalidInputException>(write("twice.off", tetra_off("", "3 0 1 2\n", 0, 1)),
-                                      {"1 duplicate face", "face 4 repeats face 0"});
+TEST_F(LoadOpenMeshTest, DuplicateFaceIsRemovedByTheRepairAndAnErrorWithout) {
+  // Face 0 of the tetrahedron, (0 2 1), given twice.
+  const fs::path twice = write("twice.off", tetra_off("", "3 0 2 1\n", 0, 1));
+  const LoadedMesh loaded = load_mesh(twice);
+  EXPECT_EQ(loaded.mesh.n_faces(), 4u);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 4u);
+  ASSERT_EQ(loaded.repairs.size(), 1u);
+  EXPECT_EQ(loaded.repairs[0],
+            "removed 1 duplicate face (the same vertices as another face, facing the same way)");
+  LoadOptions strict;
+  strict.repair = false;
+  expect_error<InvalidInputException>(twice, {"1 duplicate face", "face 4 repeats face 0"}, strict);
+}
+
+TEST_F(LoadOpenMeshTest, AFlapFoldedFlatOntoItselfIsRemovedWhole) {
+  // Vertex 4 is used only by a pair of faces facing opposite ways over edge 0-1 of the
+  // tetrahedron (as Blender's Suzanne has, where two quads share three corners): that edge is
+  // then used four times. The pair has no area; both go, and vertex 4 with them.
+  const LoadedMesh loaded =
+      load_mesh(write("flap.off", tetra_off("0.5 -0.5 0\n", "3 0 1 4\n3 0 4 1\n", 1, 2)));
+  EXPECT_EQ(loaded.mesh.n_faces(), 4u);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 4u);
+  EXPECT_NEAR(surface_area(loaded.mesh), 1.5 + std::sqrt(3.0) / 2.0, 1e-12);
+  EXPECT_EQ(loaded.repairs,
+            (std::vector<std::string>{"removed 1 pair of faces on the same vertices facing "
+                                      "opposite ways (a flap folded flat onto itself)",
+                                      "removed 1 vertex used only by those faces"}));
+  // Two copies one way and one the other: one pair goes, the first facing the way most do
+  // (the tetrahedron's own face 0) stays.
+  const LoadedMesh three = load_mesh(write("three.off", tetra_off("", "3 2 1 0\n3 0 1 2\n", 0, 2)));
+  EXPECT_EQ(three.mesh.n_faces(), 4u);
+  EXPECT_NEAR(surface_area(three.mesh), 1.5 + std::sqrt(3.0) / 2.0, 1e-12);
+  EXPECT_EQ(three.repairs.size(), 1u);
+}
+
+TEST_F(LoadOpenMeshTest, ASurfaceDoubledBackOnItselfIsAnError) {
+  expect_error<InvalidInputException>(
+      write("doubled.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
+      {"doubled.off", "no faces left", "facing the other way"});
 }
 
 TEST_F(LoadOpenMeshTest, NonConvexPolygonIsEarClipped) {
