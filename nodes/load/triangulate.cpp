@@ -1,4 +1,5 @@
-// Triangulation of the file's faces: fans, and ear clipping for polygons a fan would fold over.
+// Triangulation of the file's faces: fans, ear clipping for polygons a fan would fold over, and
+// for a twisted quad (no ear to clip) the diagonal that folds least.
 
 #include "nodes/load/triangulate.h"
 
@@ -60,6 +61,23 @@ bool ear_clip(const Vec3d* const* points, std::size_t size, const Vec3d& normal,
   return true;
 }
 
+// The two triangles of quad 0-1-2-3 over the diagonal 0-2 or 1-3, whichever gives triangles
+// whose normals agree most (the cosine of the angle between them; a triangle of no area
+// agrees with nothing).
+std::vector<std::array<std::size_t, 3>> least_folded_split(const Vec3d* const* points) {
+  auto normal = [&](std::size_t a, std::size_t b, std::size_t c) {
+    return cross(*points[b] - *points[a], *points[c] - *points[a]);
+  };
+  auto agreement = [&](const Vec3d& m, const Vec3d& n) {
+    const double lengths = std::sqrt(OpenMesh::dot(m, m) * OpenMesh::dot(n, n));
+    return lengths > 0.0 ? OpenMesh::dot(m, n) / lengths : -2.0;
+  };
+  const double over_02 = agreement(normal(0, 1, 2), normal(0, 2, 3));
+  const double over_13 = agreement(normal(0, 1, 3), normal(1, 2, 3));
+  if (over_02 >= over_13) return {{0, 1, 2}, {0, 2, 3}};
+  return {{0, 1, 3}, {1, 2, 3}};
+}
+
 }  // namespace
 
 Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const std::string& file,
@@ -68,7 +86,7 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
   soup.triangles.reserve(raw.corners.size() >= 2 * raw.n_faces()
                              ? raw.corners.size() - 2 * raw.n_faces()
                              : raw.n_faces());
-  std::uint64_t polygons = 0, non_convex = 0, self_intersecting = 0;
+  std::uint64_t polygons = 0, non_convex = 0, self_intersecting = 0, twisted_quads = 0;
   std::size_t first_self_intersecting = 0;
   std::vector<const Vec3d*> points;
   std::vector<std::array<std::size_t, 3>> ears;
@@ -94,8 +112,14 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
         points.resize(size);
         for (std::size_t i = 0; i < size; ++i) points[i] = &raw.positions[corner[i]];
         if (!ear_clip(points.data(), size, normal, ears)) {
-          if (self_intersecting++ == 0) first_self_intersecting = f;
-          continue;
+          if (size != 4) {
+            if (self_intersecting++ == 0) first_self_intersecting = f;
+            continue;
+          }
+          // A twisted quad (a bowtie seen along its normal): split along the diagonal whose
+          // two triangles fold least against each other.
+          ++twisted_quads;
+          ears = least_folded_split(points.data());
         }
         for (const auto& ear : ears) {
           soup.triangles.push_back({corner[ear[0]], corner[ear[1]], corner[ear[2]]});
@@ -125,9 +149,14 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
             " (no ear to clip), first face " + std::to_string(first_self_intersecting) +
             "; triangulate it before loading");
   }
-  if (non_convex > 0) {
-    repairs.push_back("ear-clipped " +
-                      counted(non_convex, "non-convex polygon", "non-convex polygons"));
+  if (non_convex > twisted_quads) {
+    repairs.push_back("ear-clipped " + counted(non_convex - twisted_quads, "non-convex polygon",
+                                               "non-convex polygons"));
+  }
+  if (twisted_quads > 0) {
+    repairs.push_back("split " + counted(twisted_quads, "twisted quad", "twisted quads") +
+                      " (self-intersecting seen along its normal) along the diagonal whose two "
+                      "triangles fold least");
   }
   if (soup.triangles.size() > options.max_faces) {
     throw_invalid(file, "mesh has " + std::to_string(soup.triangles.size()) +

@@ -11,11 +11,13 @@
 
 namespace papercraft::load_internal {
 
-/// Fan triangulation with texture coordinates; polygons a fan would fold over are ear-clipped,
-/// and refused when that fails too (self-intersecting). Moves raw.positions into the soup and
+/// Fan triangulation with texture coordinates; polygons a fan would fold over are ear-clipped;
+/// where that fails too (self-intersecting), a quad is split along the diagonal that folds
+/// least, and a larger polygon refused. Moves raw.positions into the soup and
 /// adds one line per change to `repairs`.
 /// \pre check_raw_faces(raw) passed; with `with_uvs`, raw.corner_uv has one UV per corner.
-/// \throws InvalidInputException for a self-intersecting polygon or more than options.max_faces
+/// \throws InvalidInputException for a self-intersecting polygon of 5 or more corners or more
+///   than options.max_faces
 ///   triangles.
 Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const std::string& file,
                  std::vector<std::string>& repairs);

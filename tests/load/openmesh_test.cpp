@@ -13,6 +13,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -720,6 +721,48 @@ TEST_F(LoadOpenMeshTest, NonConvexPolygonIsEarClipped) {
   expect_error<InvalidInputException>(
       write("star.obj", "v 0 0 0\nv 2 2 0\nv 2 0 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5\n"),
       {"1 self-intersecting polygon", "first face 0"});
+}
+
+TEST_F(LoadOpenMeshTest, ATwistedQuadIsSplitAlongTheDiagonalThatFoldsLeast) {
+  // Face 4596 of the Beast (common-3d-test-models): seen along its Newell normal, a bow tie
+  // (no ear to clip). Either diagonal folds it sharply: the cosine between the two triangles'
+  // normals is -0.56 over 0-2 and -0.70 over 1-3.
+  const double p[4][3] = {{12.880048, 236.295380, 43.735176},
+                          {12.819249, 236.278671, 43.792137},
+                          {12.944972, 236.356552, 42.972511},
+                          {12.883921, 236.197540, 42.910332}};
+  std::string obj;
+  for (const auto& q : p)
+    obj += "v " + std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) +
+           "\n";
+  const LoadedMesh loaded = load_mesh(write("twisted.obj", obj + "f 1 2 3 4\n"));
+  ASSERT_EQ(loaded.mesh.n_faces(), 2u);
+  EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(),
+                      "split 1 twisted quad (self-intersecting seen along its normal) along the "
+                      "diagonal whose two triangles fold least"),
+            loaded.repairs.end());
+  // The cosine between the normals of the two triangles over each diagonal.
+  auto cosine = [&](int a, int b, int c, int d, int e, int f) {
+    const auto point = [&](int i) { return Vec3(p[i][0], p[i][1], p[i][2]); };
+    const Vec3 m = (point(b) - point(a)).cross(point(c) - point(a)).normalized();
+    const Vec3 n = (point(e) - point(d)).cross(point(f) - point(d)).normalized();
+    return m.dot(n);
+  };
+  const double over_02 = cosine(0, 1, 2, 0, 2, 3), over_13 = cosine(0, 1, 3, 1, 2, 3);
+  ASSERT_GT(over_02, over_13 + 0.1);
+  std::vector<Vec3> normals;
+  for (auto f : loaded.mesh.faces()) {
+    const auto n = loaded.mesh.calc_face_normal(f);
+    normals.emplace_back(n[0], n[1], n[2]);
+  }
+  EXPECT_NEAR(normals[0].normalized().dot(normals[1].normalized()), over_02,
+              1e-4);  // OBJ: single precision
+  // Both triangles hold the diagonal 0-2 (file vertices 1 and 3).
+  for (auto f : loaded.mesh.faces()) {
+    std::set<int> corners;
+    for (auto v : f.vertices()) corners.insert(v.idx());
+    EXPECT_TRUE(corners.count(0) && corners.count(2));
+  }
 }
 
 TEST_F(LoadOpenMeshTest, OffCommentsAndBlankLines) {
