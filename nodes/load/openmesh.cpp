@@ -204,6 +204,20 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
       loaded.repairs.push_back(what.str());
     }
   }
+  if (options.repair) {
+    const DegenerateFaces degenerate =
+        heal_degenerate_triangles(soup, options.degenerate_area_ratio);
+    if (degenerate.collapsed > 0) {
+      loaded.repairs.push_back(
+          "removed " + counted(degenerate.collapsed, "face", "faces") +
+          " whose corners were merged into one another (exactly duplicate vertices)");
+    }
+    if (degenerate.flat > 0) {
+      loaded.repairs.push_back(
+          "removed " + counted(degenerate.flat, "zero-area face", "zero-area faces") +
+          " (corners on one line), each face across its longest edge split at its middle corner");
+    }
+  }
   check_degenerate_triangles(soup, options, file);
   if (options.repair) {
     const DuplicateFaces duplicates = remove_duplicate_triangles(soup);
@@ -224,7 +238,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
     }
     if (const std::size_t removed = remove_unreferenced_vertices(soup); removed > 0) {
       loaded.repairs.push_back("removed " + counted(removed, "vertex", "vertices") +
-                               " used only by those faces");
+                               " used only by the faces removed");
     }
   }
   check_duplicate_triangles(soup, file);

@@ -37,12 +37,15 @@ namespace papercraft {
 
 struct LoadOptions {
   /// Apply the safe repairs, each logged as one line of LoadedMesh::repairs: remove unreferenced
-  /// vertices; merge duplicate vertices (see duplicate_vertex_epsilon); remove duplicate faces
+  /// vertices; merge duplicate vertices (see duplicate_vertex_epsilon); heal degenerate faces
+  /// (heal_degenerate_triangles: drop one whose corners merged; drop one of zero area and split
+  /// the face across its longest edge at its middle corner); remove duplicate faces
   /// (remove_duplicate_triangles: a copy facing the same way, or a pair facing opposite ways,
   /// with the vertices only that pair used); flip faces so that
   /// neighbours agree on their orientation; flip closed components that face inwards. With
   /// `repair == false` unreferenced and duplicate vertices are kept as they are (a duplicate
-  /// then opens a boundary), and duplicate faces and an inconsistent orientation are errors.
+  /// then opens a boundary), and degenerate and duplicate faces and an inconsistent orientation
+  /// are errors.
   bool repair = true;
   /// Files declaring more faces (and meshes with more triangles after triangulation) are refused.
   std::size_t max_faces = 50'000'000;
@@ -101,7 +104,8 @@ struct LoadedMesh {
 ///   malformed (counts that disagree with the header, unparsable records, list or property types
 ///   OpenMesh's reader cannot read); it has no faces or more than options.max_faces; it has
 ///   non-finite (NaN, infinite, beyond single precision) coordinates, faces with fewer than 3
-///   vertices or out-of-range indices, non-convex polygons, degenerate (zero-area) faces,
+///   vertices or out-of-range indices, non-convex polygons, degenerate (zero-area) faces the
+///   repair cannot heal,
 ///   non-manifold edges or vertices, or a non-orientable component; no faces left once
 ///   duplicate faces are removed; or (with repair off) duplicate or inconsistently oriented
 ///   faces.

@@ -1,8 +1,8 @@
 // Checks of the raw faces and the triangle soup, and the safe repairs: unreferenced and duplicate
-// vertices, non-manifold vertices split per fan, consistent and outward orientation.
+// vertices, degenerate and duplicate faces, non-manifold vertices split per fan, consistent and
+// outward orientation.
 
 #include "nodes/load/repair.h"
-
 
 #include <algorithm>
 #include <array>
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <unordered_map>
 #include <utility>
@@ -201,21 +202,134 @@ std::size_t merge_duplicate_vertices(Soup& soup, double epsilon) {
   return merged;
 }
 
+namespace {
+
+bool repeats_a_corner(const Triangle3& tri) {
+  return tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
+}
+
+// Twice the area at most `ratio` times the longest edge squared (corners all different).
+bool flat_corners(const Soup& soup, const Triangle3& tri, double ratio) {
+  const Vec3d& a = soup.positions[tri[0]];
+  const Vec3d& b = soup.positions[tri[1]];
+  const Vec3d& c = soup.positions[tri[2]];
+  const double twice_area = cross(b - a, c - a).norm();
+  const double longest = std::max({(b - a).sqrnorm(), (c - b).sqrnorm(), (a - c).sqrnorm()});
+  return twice_area <= ratio * longest;
+}
+
+// Removes the triangles t with erase[t] (with their source faces and UVs), keeping the order.
+void erase_triangles(Soup& soup, const std::vector<char>& erase) {
+  const bool with_uvs = !soup.corner_uv.empty();
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    if (erase[t]) continue;
+    soup.triangles[kept] = soup.triangles[t];
+    soup.source_face[kept] = soup.source_face[t];
+    if (with_uvs) soup.corner_uv[kept] = soup.corner_uv[t];
+    ++kept;
+  }
+  soup.triangles.resize(kept);
+  soup.source_face.resize(kept);
+  if (with_uvs) soup.corner_uv.resize(kept);
+}
+
+std::uint64_t edge_key(int a, int b) {
+  const auto [low, high] = std::minmax(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(low)) << 32) |
+         static_cast<std::uint32_t>(high);
+}
+
+}  // namespace
+
+DegenerateFaces heal_degenerate_triangles(Soup& soup, double ratio) {
+  DegenerateFaces healed;
+  const bool with_uvs = !soup.corner_uv.empty();
+  std::vector<char> dead(soup.triangles.size(), 0);
+  // A face whose corners merged into one another (duplicate vertices) has no area nor edges
+  // of its own: dropped.
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+    if (repeats_a_corner(soup.triangles[t])) dead[t] = 1, ++healed.collapsed;
+  // A face whose corners lie on one line (its middle corner m on its longest edge a-b) is
+  // dropped and the face across a-b split at m into two, which take its place along a-m and
+  // m-b: the surface is the same, and each edge still has its two faces. Passes repeat while
+  // they heal one (a face split may lie on the line too), a face changed in a pass waiting for
+  // the next.
+  for (int pass = 0; pass < 8; ++pass) {
+    std::unordered_map<std::uint64_t, std::vector<int>> faces_on;
+    std::vector<int> flat;
+    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+      if (dead[t]) continue;
+      const Triangle3& tri = soup.triangles[t];
+      for (int k = 0; k < 3; ++k)
+        faces_on[edge_key(tri[k], tri[(k + 1) % 3])].push_back(static_cast<int>(t));
+      if (flat_corners(soup, tri, ratio)) flat.push_back(static_cast<int>(t));
+    }
+    std::vector<char> changed(soup.triangles.size(), 0);
+    bool progress = false;
+    for (const int f : flat) {
+      if (changed[f]) continue;
+      const Triangle3 tri = soup.triangles[f];
+      int longest = 0;
+      double most = -1.0;
+      for (int k = 0; k < 3; ++k) {
+        const double length = (soup.positions[tri[(k + 1) % 3]] - soup.positions[tri[k]]).sqrnorm();
+        if (length > most) most = length, longest = k;
+      }
+      const int a = tri[longest], b = tri[(longest + 1) % 3], m = tri[(longest + 2) % 3];
+      std::vector<int> across;
+      for (const int g : faces_on[edge_key(a, b)])
+        if (g != f && !dead[g]) across.push_back(g);
+      if (across.size() > 1) continue;  // a non-manifold edge: left to the topology check
+      if (across.size() == 1) {
+        const int g = across[0];
+        if (changed[g]) continue;
+        Triangle3& other = soup.triangles[g];
+        // other = (p, q, x) in its own order, {p, q} = {a, b}.
+        int k = 0;
+        while (!((other[k] == a || other[k] == b) &&
+                 (other[(k + 1) % 3] == a || other[(k + 1) % 3] == b)))
+          ++k;
+        const int p = other[k], q = other[(k + 1) % 3], x = other[(k + 2) % 3];
+        if (x == m) continue;  // the flat face repeated the other way: left to the checks
+        const Vec3d along = soup.positions[q] - soup.positions[p];
+        const double share = OpenMesh::dot(soup.positions[m] - soup.positions[p], along) /
+                             std::max(along.sqrnorm(), std::numeric_limits<double>::min());
+        other = {p, m, x};
+        soup.triangles.push_back({m, q, x});
+        soup.source_face.push_back(soup.source_face[g]);
+        if (with_uvs) {
+          const std::array<Vec2d, 3> uv = soup.corner_uv[g];
+          const Vec2d& uv_p = uv[k];
+          const Vec2d& uv_q = uv[(k + 1) % 3];
+          const Vec2d& uv_x = uv[(k + 2) % 3];
+          const Vec2d uv_m = uv_p + (uv_q - uv_p) * std::clamp(share, 0.0, 1.0);
+          soup.corner_uv[g] = {uv_p, uv_m, uv_x};
+          soup.corner_uv.push_back({uv_m, uv_q, uv_x});
+        }
+        dead.push_back(0);
+        changed.push_back(1);
+        changed[g] = 1;
+      }
+      dead[f] = 1;
+      changed[f] = 1;
+      ++healed.flat;
+      progress = true;
+    }
+    if (!progress) break;
+  }
+  if (healed.collapsed + healed.flat > 0) erase_triangles(soup, dead);
+  return healed;
+}
+
 void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,
                                 const std::string& file) {
   std::uint64_t degenerate = 0;
   std::size_t first = 0;
   for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
     const Triangle3& tri = soup.triangles[t];
-    bool bad = tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
-    if (!bad) {
-      const Vec3d& a = soup.positions[tri[0]];
-      const Vec3d& b = soup.positions[tri[1]];
-      const Vec3d& c = soup.positions[tri[2]];
-      const double twice_area = cross(b - a, c - a).norm();
-      const double longest = std::max({(b - a).sqrnorm(), (c - b).sqrnorm(), (a - c).sqrnorm()});
-      bad = twice_area <= options.degenerate_area_ratio * longest;
-    }
+    const bool bad =
+        repeats_a_corner(tri) || flat_corners(soup, tri, options.degenerate_area_ratio);
     if (bad && degenerate++ == 0) first = t;
   }
   if (degenerate > 0) {
@@ -263,18 +377,7 @@ DuplicateFaces remove_duplicate_triangles(Soup& soup) {
     removed.copies += most.size() - 1 - folds;
     for (std::size_t i = begin; i < end; ++i) drop[keys[i].second] = keys[i].second != most[0];
   }
-  if (removed.copies + removed.folds == 0) return removed;
-  std::size_t kept = 0;
-  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-    if (drop[t]) continue;
-    soup.triangles[kept] = soup.triangles[t];
-    soup.source_face[kept] = soup.source_face[t];
-    if (!soup.corner_uv.empty()) soup.corner_uv[kept] = soup.corner_uv[t];
-    ++kept;
-  }
-  soup.triangles.resize(kept);
-  soup.source_face.resize(kept);
-  if (!soup.corner_uv.empty()) soup.corner_uv.resize(kept);
+  if (removed.copies + removed.folds > 0) erase_triangles(soup, drop);
   return removed;
 }
 

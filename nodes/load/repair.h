@@ -20,6 +20,19 @@ std::size_t remove_unreferenced_vertices(Soup& soup);
 /// Merges each vertex into an earlier one whose coordinates all differ from it by at most
 /// `epsilon` (0: only equal positions); returns how many were merged.
 std::size_t merge_duplicate_vertices(Soup& soup, double epsilon);
+/// What heal_degenerate_triangles healed: `collapsed` faces had corners merged into one another
+/// (dropped); `flat` faces had their corners on one line (dropped, the face across the longest
+/// edge split at the middle corner).
+struct DegenerateFaces {
+  std::size_t collapsed = 0;
+  std::size_t flat = 0;
+};
+/// Heals the faces check_degenerate_triangles refuses where it can without moving the surface:
+/// a face with a repeated corner is dropped; a face whose corners lie on one line (twice its
+/// area at most `ratio` times its longest edge squared) is dropped and the face across its
+/// longest edge split at its middle corner, so that every edge keeps its faces. A flat face
+/// whose longest edge has more than one other face is left as it is.
+DegenerateFaces heal_degenerate_triangles(Soup& soup, double ratio);
 /// Throws InvalidInputException for a triangle with a repeated vertex or with twice its area at
 /// most options.degenerate_area_ratio times its longest edge squared.
 void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,

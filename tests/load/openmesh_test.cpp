@@ -640,10 +640,20 @@ TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
 }
 
 TEST_F(LoadOpenMeshTest, DegenerateFaces) {
-  // Collinear corners.
+  LoadOptions strict;
+  strict.repair = false;
+  // Collinear corners, a face on its own: the repair drops it, and its two vertices only it
+  // used; without the repair it is an error.
+  const fs::path collinear = write("collinear.off", tetra_off("2 0 0\n3 0 0\n", "3 1 4 5\n", 2, 1));
+  const LoadedMesh healed = load_mesh(collinear);
+  EXPECT_EQ(healed.mesh.n_faces(), 4u);
+  EXPECT_EQ(healed.mesh.n_vertices(), 4u);
+  EXPECT_EQ(healed.repairs,
+            (std::vector<std::string>{"removed 1 zero-area face (corners on one line), each face "
+                                      "across its longest edge split at its middle corner",
+                                      "removed 2 vertices used only by the faces removed"}));
   expect_error<InvalidInputException>(
-      write("collinear.off", tetra_off("2 0 0\n3 0 0\n", "3 1 4 5\n", 2, 1)),
-      {"1 degenerate (zero-area) face", "first face 4", "vertices 1, 4, 5"});
+      collinear, {"1 degenerate (zero-area) face", "first face 4", "vertices 1, 4, 5"}, strict);
   // A repeated corner.
   expect_error<InvalidInputException>(write("repeated.off", tetra_off("", "3 1 2 2\n", 0, 1)),
                                       {"degenerate", "face 4"});
@@ -653,8 +663,45 @@ TEST_F(LoadOpenMeshTest, DegenerateFaces) {
   // Two corners of an STL triangle coincide (OpenMesh alone would drop it silently).
   std::string stl = tetra_stl_binary("binary");
   std::memcpy(&stl[84 + 50 * 2 + 24], &stl[84 + 50 * 2 + 12], 12);
+  // (Refused while reading the STL, repair or not.)
   expect_error<InvalidInputException>(write("degenerate.stl", stl),
                                       {"1 degenerate face", "triangle 2"});
+}
+
+TEST_F(LoadOpenMeshTest, AZeroAreaFaceInASurfaceIsHealedWithoutMovingIt) {
+  // The tetrahedron with edge 0-1 split at its middle, vertex 4, on the side of face 0 1 3
+  // (0 4 3 and 4 1 3), and a zero-area face 0 1 4 closing the gap against face 0 2 1: every
+  // edge has two faces. Each corner's UV is its (x, y).
+  const char* obj =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\n"
+      "vt 0 0\nvt 1 0\nvt 0 1\nvt 0 0\nvt 0.5 0\n"
+      "f 1/1 3/3 2/2\nf 1/1 5/5 4/4\nf 5/5 2/2 4/4\nf 1/1 4/4 3/3\nf 2/2 3/3 4/4\n"
+      "f 1/1 2/2 5/5\n";
+  const fs::path path = write("cap.obj", obj);
+  const LoadedMesh loaded = load_mesh(path);
+  // The flat face goes, and face 0 2 1 is split at vertex 4: five faces, closed, the same area.
+  EXPECT_EQ(loaded.mesh.n_faces(), 6u - 1u + 1u);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 5u);
+  EXPECT_TRUE(boundary_loops(loaded.mesh).empty());
+  EXPECT_NEAR(surface_area(loaded.mesh), 1.5 + std::sqrt(3.0) / 2.0, 1e-12);
+  for (auto f : loaded.mesh.faces()) {
+    const auto n = loaded.mesh.calc_face_normal(f);
+    EXPECT_GT(n.norm(), 0.5) << "no face left without area";
+  }
+  // The UV of vertex 4 in the split face is interpolated along the edge: (0.5, 0), as its own.
+  ASSERT_TRUE(loaded.has_uvs);
+  EXPECT_EQ(loaded.uv_seam_vertices, 0u);
+  const auto uv = loaded.mesh.texcoord2D(loaded.mesh.vertex_handle(4));
+  EXPECT_DOUBLE_EQ(uv[0], 0.5);
+  EXPECT_DOUBLE_EQ(uv[1], 0.0);
+  EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(),
+                      "removed 1 zero-area face (corners on one line), each face across its "
+                      "longest edge split at its middle corner"),
+            loaded.repairs.end());
+  LoadOptions strict;
+  strict.repair = false;
+  expect_error<InvalidInputException>(path, {"1 degenerate (zero-area) face", "first face 5"},
+                                      strict);
 }
 
 TEST_F(LoadOpenMeshTest, DuplicateFaceIsRemovedByTheRepairAndAnErrorWithout) {
@@ -683,7 +730,7 @@ TEST_F(LoadOpenMeshTest, AFlapFoldedFlatOntoItselfIsRemovedWhole) {
   EXPECT_EQ(loaded.repairs,
             (std::vector<std::string>{"removed 1 pair of faces on the same vertices facing "
                                       "opposite ways (a flap folded flat onto itself)",
-                                      "removed 1 vertex used only by those faces"}));
+                                      "removed 1 vertex used only by the faces removed"}));
   // Two copies one way and one the other: one pair goes, the first facing the way most do
   // (the tetrahedron's own face 0) stays.
   const LoadedMesh three = load_mesh(write("three.off", tetra_off("", "3 2 1 0\n3 0 1 2\n", 0, 2)));
