@@ -562,9 +562,10 @@ bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, Fl
 
 // A strip grown from its neighbours (a crumb no neighbour takes, a band no hinge takes): it
 // takes their triangles that share an edge with it, one at a time, each folded out of it
-// across every edge it shares; of those that find a place, the one leaving it most compact.
-// A triangle takes with it the part of its strip it alone held on (the end of a ruled strip).
-// It is taken only where it lands on no triangle of the strip, every edge shared welds (no
+// across every edge it shares; of those that find a place, the one leaving it most compact
+// (with `least_narrow_first`, of those leaving it narrow over the least share, the most
+// compact). A triangle takes with it the part of its strip it alone held on (the end of a ruled
+// strip). It is taken only where it lands on no triangle of the strip, every edge shared welds (no
 // slit opens in the strip) and what is left of the neighbour is at least min_area. Grows
 // until the strip reaches min_area (kMinArea) or is narrower than min_width over at most
 // narrow_share of its area (kWide), and neither the strip nor a neighbour it took from is
@@ -575,7 +576,7 @@ enum class GrowUntil { kMinArea, kWide };
 
 bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil until,
                           double min_area, double min_width, double narrow_share,
-                          const MergeOptions& options) {
+                          const MergeOptions& options, bool least_narrow_first = false) {
   constexpr std::size_t kMostTaken = 128;
   auto share_of = [&](const FlatStrip& strip) {
     return min_width > 0.0 ? narrow_area_fraction(strip.vertices2d, strip.triangles, min_width)
@@ -654,10 +655,12 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
       }
     }
     // Of the triangles that find a place, the one leaving the strip most compact (the least
-    // squared perimeter per area in the plane: a round piece is wide, a long one narrow).
+    // squared perimeter per area in the plane: a round piece is wide, a long one narrow); with
+    // least_narrow_first, of those leaving it narrower than min_width over the least share of
+    // its area.
     FlatStrip best, best_rest;
     int best_strip = -1;
-    double best_score = 0.0;
+    std::pair<double, double> best_score{0.0, 0.0};
     for (const Candidate& candidate : candidates) {
       const FlatStrip& donor = current(candidate.strip);
       const Triangle& tri = donor.triangles[candidate.triangle];
@@ -681,7 +684,8 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
       double perimeter = 0.0;
       for (const BoundaryEdge& e : merged.boundary)
         perimeter += (merged.vertices2d[e.v1] - merged.vertices2d[e.v0]).norm();
-      const double score = perimeter * perimeter / flat_area(merged);
+      const std::pair<double, double> score{least_narrow_first ? share_of(merged) : 0.0,
+                                            perimeter * perimeter / flat_area(merged)};
       if (best_strip >= 0 && score >= best_score) continue;
       best = std::move(merged);
       best_rest = std::move(rest);
@@ -1114,6 +1118,12 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     if (!joined)
       joined = grow_from_neighbours(strips, small, GrowUntil::kMinArea, min_area, min_width,
                                     options.narrow_join_share, options);
+    // Grown the most compact way it ends narrower than it began (a neighbour's fan gives thin
+    // triangles whose tips add narrow area): grown again, taking first what leaves it narrow
+    // over the least share.
+    if (!joined && min_width > 0.0)
+      joined = grow_from_neighbours(strips, small, GrowUntil::kMinArea, min_area, min_width,
+                                    options.narrow_join_share, options, true);
     if (!joined) given_up.insert(strips[small].id);
   }
   if (left) left->assign(given_up.begin(), given_up.end());
