@@ -233,8 +233,9 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
     }
     if (soup.triangles.empty()) {
       throw_invalid(file,
-                    "mesh has no faces left once the faces on the same vertices as another "
-                    "facing the other way are removed (a surface doubled back on itself)");
+                    "mesh has no faces left once its faces of no area are removed (corners "
+                    "merged or on one line, or on the same vertices as another facing the other "
+                    "way: a surface doubled back on itself)");
     }
     if (const std::size_t removed = remove_unreferenced_vertices(soup); removed > 0) {
       loaded.repairs.push_back("removed " + counted(removed, "vertex", "vertices") +

@@ -15,6 +15,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "core/edge_map.h"
 #include "core/union_find.h"
 #include "nodes/load/messages.h"
 
@@ -234,12 +235,6 @@ void erase_triangles(Soup& soup, const std::vector<char>& erase) {
   if (with_uvs) soup.corner_uv.resize(kept);
 }
 
-std::uint64_t edge_key(int a, int b) {
-  const auto [low, high] = std::minmax(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(low)) << 32) |
-         static_cast<std::uint32_t>(high);
-}
-
 }  // namespace
 
 DegenerateFaces heal_degenerate_triangles(Soup& soup, double ratio) {
@@ -256,13 +251,13 @@ DegenerateFaces heal_degenerate_triangles(Soup& soup, double ratio) {
   // they heal one (a face split may lie on the line too), a face changed in a pass waiting for
   // the next.
   for (int pass = 0; pass < 8; ++pass) {
-    std::unordered_map<std::uint64_t, std::vector<int>> faces_on;
+    EdgeTriangles faces_on;  // of the faces alive
     std::vector<int> flat;
     for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
       if (dead[t]) continue;
       const Triangle3& tri = soup.triangles[t];
       for (int k = 0; k < 3; ++k)
-        faces_on[edge_key(tri[k], tri[(k + 1) % 3])].push_back(static_cast<int>(t));
+        faces_on[undirected_edge_key(tri[k], tri[(k + 1) % 3])].push_back(static_cast<int>(t));
       if (flat_corners(soup, tri, ratio)) flat.push_back(static_cast<int>(t));
     }
     std::vector<char> changed(soup.triangles.size(), 0);
@@ -278,7 +273,7 @@ DegenerateFaces heal_degenerate_triangles(Soup& soup, double ratio) {
       }
       const int a = tri[longest], b = tri[(longest + 1) % 3], m = tri[(longest + 2) % 3];
       std::vector<int> across;
-      for (const int g : faces_on[edge_key(a, b)])
+      for (const int g : faces_on.at(undirected_edge_key(a, b)))
         if (g != f && !dead[g]) across.push_back(g);
       if (across.size() > 1) continue;  // a non-manifold edge: left to the topology check
       if (across.size() == 1) {
