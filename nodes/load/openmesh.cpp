@@ -137,11 +137,18 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
   loaded.input_faces = scan.faces;
   const bool vertices_match = scan.format == Format::stl ? raw.positions.size() <= scan.vertices
                                                          : raw.positions.size() == scan.vertices;
-  if (!vertices_match || raw.n_faces() != scan.faces || raw.corners.size() != scan.corners) {
+  // OpenMesh's STL reader drops a triangle two of whose corners coincide.
+  const std::uint64_t faces = scan.faces - scan.stl_degenerate;
+  const std::uint64_t corners = scan.corners - 3 * scan.stl_degenerate;
+  if (!vertices_match || raw.n_faces() != faces || raw.corners.size() != corners) {
     throw_io(file, "OpenMesh's reader returned " + declared(raw.positions.size(), raw.n_faces()) +
                        " (" + std::to_string(raw.corners.size()) + " corners), but the file has " +
-                       declared(scan.vertices, scan.faces) + " (" + std::to_string(scan.corners) +
+                       declared(scan.vertices, faces) + " (" + std::to_string(corners) +
                        " corners): it misread the file");
+  }
+  if (scan.stl_degenerate > 0) {
+    loaded.repairs.push_back("removed " + counted(scan.stl_degenerate, "triangle", "triangles") +
+                             " two of whose corners coincide (no area)");
   }
   if (scan.format == Format::stl && raw.positions.size() < scan.vertices) {
     loaded.repairs.push_back("merged " +

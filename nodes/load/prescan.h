@@ -27,6 +27,9 @@ struct Prescan {
   std::string ply_texture;                 // PLY "comment TextureFile <name>"
   bool off_comments = false;               // an ascii OFF with '#' comments
   std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
+  /// STL triangles two of whose corners coincide, which OpenMesh's reader drops (counted in
+  /// `faces`): with the repair on, their removal is logged; without it they are an error.
+  std::uint64_t stl_degenerate = 0;
   /// The pre-scan read the records itself (a plain ascii OFF or binary PLY, given a RawMesh):
   /// OpenMesh's reader is not needed.
   bool read_natively = false;
@@ -64,7 +67,9 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
 /// `read_natively` is set.
 Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options,
                     RawMesh* raw = nullptr);
-/// STL, binary when the size is 84 + 50 * triangles, else ascii: every triangle's corners.
+/// STL, binary when the size is 84 + 50 * triangles, else ascii: every triangle's corners; those
+/// with two corners the same (no area) are counted in `stl_degenerate`, an error without
+/// options.repair.
 Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions& options);
 
 }  // namespace papercraft::load_internal

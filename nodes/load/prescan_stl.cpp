@@ -56,8 +56,9 @@ Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions&
         if (degenerate++ == 0) first_degenerate = t;
       }
     }
-    if (degenerate > 0)
+    if (degenerate > 0 && !options.repair)
       throw_invalid(file, degenerate_triangles_message(degenerate, first_degenerate));
+    scan.stl_degenerate = degenerate;
     scan.vertices = 3 * scan.faces;
     scan.corners = 3 * scan.faces;
     return scan;
@@ -140,8 +141,9 @@ Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions&
     throw InvalidInputException(error.what() + binary_hint);
   }
   check_some_faces(file, scan);
-  if (degenerate > 0)
+  if (degenerate > 0 && !options.repair)
     throw_invalid(file, degenerate_triangles_message(degenerate, first_degenerate));
+  scan.stl_degenerate = degenerate;
   scan.vertices = 3 * scan.faces;
   scan.corners = 3 * scan.faces;
   return scan;

@@ -16,6 +16,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "core/errors.h"
@@ -88,6 +89,17 @@ std::string tetra_stl_binary(const std::string& header) {
     data += std::string(2, '\0');
   }
   return data;
+}
+
+// One ascii STL facet on the tetrahedron's corners `corners`.
+std::string stl_facet(std::initializer_list<int> corners) {
+  std::string text = "  facet normal 0 0 0\n    outer loop\n";
+  for (int corner : corners) {
+    const auto& p = kTetraPoints[corner];
+    text += "      vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " +
+            std::to_string(p[2]) + "\n";
+  }
+  return text + "    endloop\n  endfacet\n";
 }
 
 int input_vertex_of(const Mesh& mesh, Mesh::VertexHandle v) {
@@ -304,15 +316,7 @@ TEST_F(LoadOpenMeshTest, PlyVersionOtherThanOneIsRefused) {
 
 TEST_F(LoadOpenMeshTest, StlAsciiIsWelded) {
   std::string text = "solid tetra\n";
-  for (const auto& f : kTetraFaces) {
-    text += "  facet normal 0 0 0\n    outer loop\n";
-    for (int corner : f) {
-      const auto& p = kTetraPoints[corner];
-      text += "      vertex " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " +
-              std::to_string(p[2]) + "\n";
-    }
-    text += "    endloop\n  endfacet\n";
-  }
+  for (const auto& f : kTetraFaces) text += stl_facet({f[0], f[1], f[2]});
   text += "endsolid tetra\n";
   const LoadedMesh loaded = load_mesh(write("tetra.stl", text));
   expect_closed_tetrahedron(loaded);
@@ -660,12 +664,54 @@ TEST_F(LoadOpenMeshTest, DegenerateFaces) {
   expect_error<InvalidInputException>(
       write("repeated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"),
       {"1 degenerate face", "line 5"});
-  // Two corners of an STL triangle coincide (OpenMesh alone would drop it silently).
+  // Two corners of an STL triangle coincide (OpenMesh's reader drops it): without the repair
+  // an error naming it; with it, the removal is logged and the tetrahedron lacks that face.
   std::string stl = tetra_stl_binary("binary");
   std::memcpy(&stl[84 + 50 * 2 + 24], &stl[84 + 50 * 2 + 12], 12);
-  // (Refused while reading the STL, repair or not.)
-  expect_error<InvalidInputException>(write("degenerate.stl", stl),
-                                      {"1 degenerate face", "triangle 2"});
+  const fs::path flat_stl = write("degenerate.stl", stl);
+  expect_error<InvalidInputException>(flat_stl, {"1 degenerate face", "triangle 2"}, strict);
+  const LoadedMesh open = load_mesh(flat_stl);
+  EXPECT_EQ(open.mesh.n_faces(), 3u);
+  EXPECT_EQ(open.input_faces, 4u);
+  EXPECT_EQ(boundary_loops(open.mesh).size(), 1u);
+  EXPECT_NE(std::find(open.repairs.begin(), open.repairs.end(),
+                      "removed 1 triangle two of whose corners coincide (no area)"),
+            open.repairs.end());
+}
+
+TEST_F(LoadOpenMeshTest, StlNeedleTrianglesAreDropped) {
+  // A closed tetrahedron and, as exporters that round their coordinates write them, a needle
+  // along its edge 0-1 whose corners 1 and 2 rounded to the same point (binary), and the same
+  // needle twice in ascii: dropped, the tetrahedron left closed.
+  std::string binary = tetra_stl_binary("binary");
+  binary[80] = 5;  // triangle count 5
+  for (int i = 0; i < 3; ++i) put_f32(binary, 0.0f);
+  for (int corner : {0, 1, 1})
+    for (double c : kTetraPoints[corner]) put_f32(binary, static_cast<float>(c));
+  binary += std::string(2, '\0');
+  std::string ascii = "solid needle\n" + stl_facet({0, 1, 1});
+  for (const auto& f : kTetraFaces) ascii += stl_facet({f[0], f[1], f[2]});
+  ascii += stl_facet({3, 2, 3});
+  ascii += "endsolid needle\n";
+  LoadOptions strict;
+  strict.repair = false;
+  for (const auto& [name, data, needles, first] :
+       {std::tuple{"needle.stl", binary, 1, 4}, std::tuple{"needles.stl", ascii, 2, 0}}) {
+    SCOPED_TRACE(name);
+    const fs::path path = write(name, data);
+    const LoadedMesh loaded = load_mesh(path);
+    expect_closed_tetrahedron(loaded);
+    EXPECT_EQ(loaded.input_faces, 4u + needles);
+    const std::string removed = "removed " + std::to_string(needles) +
+                                (needles == 1 ? " triangle" : " triangles") +
+                                " two of whose corners coincide (no area)";
+    EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(), removed),
+              loaded.repairs.end());
+    const std::string count =
+        std::to_string(needles) + (needles == 1 ? " degenerate face" : " degenerate faces");
+    const std::string first_one = "first triangle " + std::to_string(first);
+    expect_error<InvalidInputException>(path, {count.c_str(), first_one.c_str()}, strict);
+  }
 }
 
 TEST_F(LoadOpenMeshTest, AZeroAreaFaceInASurfaceIsHealedWithoutMovingIt) {
