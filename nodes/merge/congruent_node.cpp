@@ -43,16 +43,26 @@ void record(ModelRun& model, const ModelStrips& strips) {
 }
 
 // The pieces a person cannot handle, named in report.json and on stderr: those too small that
-// no neighbour takes, and those narrower than min_width_mm over more than their tips.
+// no neighbour takes, and those narrower than min_width_mm over more than their tips. A piece
+// glued to no other is a whole separate part of the model (a tooth, a claw, a button): no join
+// can grow or widen it, only a larger print scale, and the note says so.
 void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& strips,
                              const std::vector<int>& small) {
   const double scale = model.mm_per_unit();
   const PieceLimits limits = model.piece_limits();
   for (const FlatStrip& strip : strips) {
+    const bool alone =
+        std::none_of(strip.boundary.begin(), strip.boundary.end(), [&](const BoundaryEdge& e) {
+          return e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id;
+        });
+    const std::string why = alone ? ": it is a separate part of the model by itself (a larger "
+                                    "--height or --scale prints it larger)"
+                                  : "";
     if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
       const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
                                std::to_string(std::lround(flat_area(strip) * scale * scale)) +
-                               " mm^2, below min_area_mm2, and no neighbour takes it";
+                               " mm^2, below min_area_mm2" +
+                               (alone ? why : ", and no neighbour takes it");
       model.note(text);
       spdlog::warn("{}: {}", model.name, text);
     }
@@ -62,7 +72,7 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
       if (narrow > limits.max_narrow_share) {
         const std::string text = "flat strip " + std::to_string(strip.id) + " is narrower than " +
                                  "min_width_mm over " + std::to_string(std::lround(100 * narrow)) +
-                                 "% of its area";
+                                 "% of its area" + why;
         model.note(text);
         spdlog::warn("{}: {}", model.name, text);
       }

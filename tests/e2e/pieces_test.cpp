@@ -159,6 +159,35 @@ TEST(Pieces, NoCrumbOnAThinDumbbell) {
         << "flat strip " << strip.at("id");
 }
 
+// A separate part of the model smaller than min_area_mm2 (a sphere and, beside it, a
+// tetrahedron with edges of 2.5 mm on paper) cannot be joined to anything: it stays, and the
+// notes say it is a part by itself (what a larger print scale fixes), not that no neighbour
+// takes it. The sphere's pieces are named in no note.
+TEST(Pieces, ASmallSeparatePartIsNamedAsOne) {
+  TriangleMesh mesh = generate_shape("sphere", {});
+  const auto first = static_cast<int>(mesh.vertices.size());
+  const double edge = 0.05;  // the sphere's radius is 1: the model 4.05 units long at 200 mm
+  for (const Vec3& p : {Vec3(3, 0, 0), Vec3(3 + edge, 0, 0), Vec3(3, edge, 0), Vec3(3, 0, edge)})
+    mesh.vertices.push_back(p);
+  for (const std::array<int, 3>& t :
+       std::vector<std::array<int, 3>>{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}})
+    mesh.triangles.push_back({first + t[0], first + t[1], first + t[2]});
+  const auto out = run_pipeline(mesh, "2%", "sphere_and_speck");
+  expect_certified(mesh, out);
+  expect_exact_seams(out);
+  int separate = 0;
+  for (const auto& note : out.report.at("notes")) {
+    const std::string text = note.get<std::string>();
+    EXPECT_EQ(text.find("no neighbour takes it"), std::string::npos) << text;
+    if (text.find("below min_area_mm2") == std::string::npos &&
+        text.find("narrower than min_width_mm") == std::string::npos)
+      continue;
+    EXPECT_NE(text.find("a separate part of the model by itself"), std::string::npos) << text;
+    ++separate;
+  }
+  EXPECT_EQ(separate, 2) << out.report.at("notes").dump();  // the speck: too small and too narrow
+}
+
 // Without limits the same run may keep small pieces: the bound is what removes them.
 TEST(Pieces, LimitsOffKeepTheRefinementFree) {
   const TriangleMesh mesh =
