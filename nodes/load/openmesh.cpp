@@ -238,11 +238,16 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
                                " of faces on the same vertices facing opposite ways (a flap "
                                "folded flat onto itself)");
     }
+    if (duplicates.other_sides > 0) {
+      loaded.repairs.push_back(
+          "kept one side of a two-sided surface (every face written once facing each way): "
+          "removed " +
+          counted(duplicates.other_sides, "face", "faces"));
+    }
     if (soup.triangles.empty()) {
       throw_invalid(file,
                     "mesh has no faces left once its faces of no area are removed (corners "
-                    "merged or on one line, or on the same vertices as another facing the other "
-                    "way: a surface doubled back on itself)");
+                    "merged into one another or on one line)");
     }
     if (const std::size_t removed = remove_unreferenced_vertices(soup); removed > 0) {
       loaded.repairs.push_back("removed " + counted(removed, "vertex", "vertices") +

@@ -41,11 +41,13 @@ struct LoadOptions {
   /// (heal_degenerate_triangles: drop one whose corners merged; drop one of zero area and split
   /// the face across its longest edge at its middle corner); remove duplicate faces
   /// (remove_duplicate_triangles: a copy facing the same way, or a pair facing opposite ways,
-  /// with the vertices only that pair used); flip faces so that
+  /// with the vertices only that pair used; of a part made only of such pairs, a two-sided
+  /// surface, one face of each pair is kept); cut non-manifold edges apart and split
+  /// non-manifold vertices (check_topology_and_orient); flip faces so that
   /// neighbours agree on their orientation; flip closed components that face inwards. With
   /// `repair == false` unreferenced and duplicate vertices are kept as they are (a duplicate
-  /// then opens a boundary), and degenerate and duplicate faces and an inconsistent orientation
-  /// are errors.
+  /// then opens a boundary), and degenerate and duplicate faces, non-manifold edges and
+  /// vertices and an inconsistent orientation are errors.
   bool repair = true;
   /// Files declaring more faces (and meshes with more triangles after triangulation) are refused.
   std::size_t max_faces = 50'000'000;

@@ -41,9 +41,10 @@ void register_load_openmesh(Registry& registry) {
           .add(
               "repair", [](O & o) -> auto& { return o.repair; },
               "the safe repairs, each logged: remove unreferenced vertices, merge exactly "
-              "duplicate vertices, heal zero-area faces, remove duplicate faces, split "
-              "non-manifold vertices, orient the faces consistently (false: none is made; the "
-              "faces they would heal or remove, non-manifold vertices and an inconsistent "
+              "duplicate vertices, heal zero-area faces, remove duplicate faces (keep one side "
+              "of a two-sided surface), cut non-manifold edges apart, split non-manifold "
+              "vertices, orient the faces consistently (false: none is made; the faces they "
+              "would heal or remove, non-manifold edges and vertices and an inconsistent "
               "orientation are errors)")
           .add(
               "max_faces", [](O & o) -> auto& { return o.max_faces; }, "refuse larger meshes",

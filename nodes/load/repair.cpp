@@ -10,8 +10,11 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <map>
 #include <numeric>
+#include <sstream>
 #include <unordered_map>
 #include <utility>
 
@@ -351,28 +354,54 @@ DuplicateFaces remove_duplicate_triangles(Soup& soup) {
     const int low = tri[0] < tri[1] ? (tri[0] < tri[2] ? 0 : 2) : (tri[1] < tri[2] ? 1 : 2);
     return tri[(low + 1) % 3] < tri[(low + 2) % 3];
   };
-  DuplicateFaces removed;
-  std::vector<char> drop(soup.triangles.size(), 0);
+  // The groups of faces over one set of corners [begin, end) in `keys`, and whether each
+  // face is in a group with as many facing each way (a fold, or one side of a two-sided
+  // surface).
+  std::vector<std::pair<std::size_t, std::size_t>> groups;
+  std::vector<char> balanced(soup.triangles.size(), 0);
   for (std::size_t begin = 0, end = 0; begin < keys.size(); begin = end) {
     end = begin + 1;
     while (end < keys.size() && keys[end].first == keys[begin].first) ++end;
     if (end - begin == 1) continue;
-    // The faces over one set of corners: as many facing each way cancel (folds, all dropped);
-    // otherwise the first facing the way most do is kept.
+    groups.push_back({begin, end});
+    std::size_t up = 0;
+    for (std::size_t i = begin; i < end; ++i) up += ascending(keys[i].second);
+    if (2 * up == end - begin)
+      for (std::size_t i = begin; i < end; ++i) balanced[keys[i].second] = 1;
+  }
+  DuplicateFaces removed;
+  if (groups.empty()) return removed;
+  // A connected part made of nothing but such balanced groups is a two-sided surface (each
+  // face written once for each side, as game models are): one face of each group is kept.
+  UnionFind parts(soup.positions.size());
+  for (const Triangle3& t : soup.triangles) parts.unite(t[0], t[1]), parts.unite(t[0], t[2]);
+  std::vector<char> one_sided_part(soup.positions.size(), 0);
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+    if (!balanced[t]) one_sided_part[parts.find(soup.triangles[t][0])] = 1;
+  std::vector<char> drop(soup.triangles.size(), 0);
+  for (const auto& [begin, end] : groups) {
+    // The faces over one set of corners: as many facing each way cancel (folds, all dropped,
+    // but for one on a two-sided part); otherwise the first facing the way most do is kept.
     std::vector<int> up, down;
     for (std::size_t i = begin; i < end; ++i)
       (ascending(keys[i].second) ? up : down).push_back(keys[i].second);
-    const std::size_t folds = std::min(up.size(), down.size());
-    removed.folds += folds;
     if (up.size() == down.size()) {
-      for (std::size_t i = begin; i < end; ++i) drop[keys[i].second] = 1;
+      const bool two_sided = !one_sided_part[parts.find(soup.triangles[up[0]][0])];
+      for (std::size_t i = begin; i < end; ++i)
+        drop[keys[i].second] = !two_sided || keys[i].second != std::min(up[0], down[0]);
+      if (two_sided)
+        removed.other_sides += end - begin - 1;
+      else
+        removed.folds += up.size();
       continue;
     }
+    const std::size_t folds = std::min(up.size(), down.size());
+    removed.folds += folds;
     const std::vector<int>& most = up.size() > down.size() ? up : down;
     removed.copies += most.size() - 1 - folds;
     for (std::size_t i = begin; i < end; ++i) drop[keys[i].second] = keys[i].second != most[0];
   }
-  if (removed.copies + removed.folds > 0) erase_triangles(soup, drop);
+  if (removed.copies + removed.folds + removed.other_sides > 0) erase_triangles(soup, drop);
   return removed;
 }
 
@@ -419,15 +448,158 @@ void check_duplicate_triangles(const Soup& soup, const std::string& file) {
   }
 }
 
+namespace {
+
+struct EdgeUse {
+  std::uint64_t key;   // (lower vertex << 32) | higher vertex
+  std::uint32_t slot;  // 3 * triangle + k: the edge from corner k to corner k + 1
+};
+
+std::vector<std::uint32_t> slots_of(const std::vector<EdgeUse>& uses, std::size_t begin,
+                                    std::size_t end) {
+  std::vector<std::uint32_t> slots;
+  for (std::size_t i = begin; i < end; ++i) slots.push_back(uses[i].slot);
+  return slots;
+}
+
+// The faces on a non-manifold edge (its uses `slots`, edge `key` a < b) paired into sheets that
+// each pass the edge as a manifold surface would, each pair two faces next to each other in the
+// order of their third corner's angle about the edge, running opposite ways. Where the faces
+// alternate in direction around the edge, a face running b -> a (its back, the inside of a
+// consistently oriented surface, toward increasing angle) goes with the next: two solids
+// touching along an edge stay two solids, each closed. Otherwise (an odd number: a fin on a
+// surface, or directions that do not alternate) as many pairs as can be made, of those the
+// flattest (the angle between the two faces of a pair nearest a half turn), of faces running
+// opposite ways where there are such (else of any: the orientation is repaired later); a face
+// left over gets the edge as a boundary. Empty when a face has no extent away from the edge or
+// there are more than kMostFaces.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> sheets_around_edge(
+    const Soup& soup, std::uint64_t key, const std::vector<std::uint32_t>& slots) {
+  constexpr std::size_t kMostFaces = 12;  // beyond this, not worth guessing: an error
+  const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+  if (slots.size() > kMostFaces) return {};
+  const Vec3d origin = soup.positions[a];
+  const Vec3d axis = soup.positions[b] - origin;
+  const double length2 = OpenMesh::dot(axis, axis);
+  if (!(length2 > 0.0)) return {};
+  struct Around {
+    double angle;
+    bool forward;  // runs a -> b
+    std::uint32_t slot;
+  };
+  std::vector<Around> around;
+  Vec3d e1(0, 0, 0), e2(0, 0, 0);
+  for (std::uint32_t slot : slots) {
+    const Triangle3& t = soup.triangles[slot / 3];
+    const int k = static_cast<int>(slot % 3);
+    const Vec3d c = soup.positions[t[(k + 2) % 3]] - origin;
+    const Vec3d w = c - axis * (OpenMesh::dot(c, axis) / length2);
+    if (!(OpenMesh::norm(w) > 0.0)) return {};
+    if (around.empty()) {
+      e1 = w / OpenMesh::norm(w);
+      e2 = cross(axis, e1);
+      e2 /= OpenMesh::norm(e2);
+    }
+    around.push_back({std::atan2(OpenMesh::dot(w, e2), OpenMesh::dot(w, e1)), t[k] == a, slot});
+  }
+  std::sort(around.begin(), around.end(),
+            [](const Around& x, const Around& y) { return x.angle < y.angle; });
+  const std::size_t n = around.size();
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> sheets;
+  // Alternating: each back with the face after it.
+  std::size_t start = 0;
+  while (start < n && around[start].forward) ++start;
+  bool alternating = n % 2 == 0 && start < n;
+  for (std::size_t k = 0; alternating && k < n; k += 2) {
+    const Around& back = around[(start + k) % n];
+    const Around& front = around[(start + k + 1) % n];
+    alternating = !back.forward && front.forward;
+    sheets.push_back({back.slot, front.slot});
+  }
+  if (alternating) return sheets;
+  // Otherwise every matching of neighbours (i, i + 1 mod n) running opposite ways: the most
+  // pairs, then the flattest. Pair i is (i, i + 1); a matching takes no two pairs that share a
+  // face.
+  const auto gap = [&](std::size_t i) {
+    const double next = around[(i + 1) % n].angle + (i + 1 == n ? 2.0 * M_PI : 0.0);
+    return std::abs(next - around[i].angle - M_PI);
+  };
+  std::vector<std::size_t> chosen, best;
+  double best_bend = std::numeric_limits<double>::infinity();
+  bool any_direction = false;
+  const std::function<void(std::size_t, std::uint32_t, double)> search =
+      [&](std::size_t i, std::uint32_t used, double bend) {
+        if (i == n) {
+          if (chosen.size() > best.size() || (chosen.size() == best.size() && bend < best_bend))
+            best = chosen, best_bend = bend;
+          return;
+        }
+        search(i + 1, used, bend);
+        const std::size_t j = (i + 1) % n;
+        if ((used >> i & 1u) || (used >> j & 1u) ||
+            (!any_direction && around[i].forward == around[j].forward))
+          return;
+        chosen.push_back(i);
+        search(i + 1, used | 1u << i | 1u << j, bend + gap(i));
+        chosen.pop_back();
+      };
+  search(0, 0, 0.0);
+  // Faces that all run one way (their orientation is not yet repaired): paired as they lie.
+  if (best.empty()) {
+    any_direction = true;
+    search(0, 0, 0.0);
+  }
+  sheets.clear();
+  for (std::size_t i : best) sheets.push_back({around[i].slot, around[(i + 1) % n].slot});
+  return sheets;
+}
+
+}  // namespace
+
+// Moves each copy of a vertex (at `first_copy` and after, copy c made from vertex copied_from[c])
+// whose original `on_cut_edge` marks into
+// its own fan, toward the mean of its faces' centroids, by 1e-7 of the mesh's bounding-box
+// diagonal or a thousandth of its shortest edge, whichever is less: sheets cut apart at a
+// non-manifold edge then share no point, so no later step can take one sheet's edge for the
+// other's. Returns the largest move.
+double move_copies_apart(Soup& soup, const std::vector<char>& on_cut_edge, std::size_t first_copy,
+                         const std::vector<int>& copied_from) {
+  Vec3d low = soup.positions.front(), high = low;
+  for (const Vec3d& p : soup.positions) low.minimize(p), high.maximize(p);
+  const double step = 1e-7 * OpenMesh::norm(high - low);
+  const std::size_t copies = soup.positions.size() - first_copy;
+  std::vector<Vec3d> toward(copies, Vec3d(0, 0, 0));
+  std::vector<double> shortest(copies, std::numeric_limits<double>::infinity());
+  for (const Triangle3& t : soup.triangles) {
+    const Vec3d centroid =
+        (soup.positions[t[0]] + soup.positions[t[1]] + soup.positions[t[2]]) / 3.0;
+    for (int k = 0; k < 3; ++k) {
+      const auto v = static_cast<std::size_t>(t[k]);
+      if (v < first_copy) continue;
+      toward[v - first_copy] += centroid - soup.positions[v];
+      for (int other : {t[(k + 1) % 3], t[(k + 2) % 3]})
+        shortest[v - first_copy] = std::min(
+            shortest[v - first_copy], OpenMesh::norm(soup.positions[other] - soup.positions[v]));
+    }
+  }
+  double moved = 0.0;
+  for (std::size_t c = 0; c < copies; ++c) {
+    const std::size_t v = first_copy + c;
+    if (!on_cut_edge[copied_from[c]]) continue;
+    const double length = OpenMesh::norm(toward[c]);
+    if (!(length > 0.0)) continue;
+    const double by = std::min(step, 1e-3 * shortest[c]);
+    soup.positions[v] += toward[c] * (by / length);
+    moved = std::max(moved, by);
+  }
+  return moved;
+}
+
 // Checks manifoldness; with `repair`, makes the orientation consistent and closed components face
 // outwards. neighbor[3 t + k] is the triangle across edge k (t[k] -> t[k+1]) or -1.
 void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
                                std::vector<std::string>& repairs) {
   const std::size_t triangles = soup.triangles.size();
-  struct EdgeUse {
-    std::uint64_t key;
-    std::uint32_t slot;  // 3 * triangle + k
-  };
   // Every edge use, sorted by (key, slot): bucketed by the lower vertex in slot order (a
   // counting sort), then each bucket, a vertex's few edges, stably sorted by the higher vertex.
   std::vector<EdgeUse> uses(3 * triangles);
@@ -461,26 +633,40 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
   };
   std::vector<int> neighbor(3 * triangles, -1);
   UnionFind fans(3 * triangles);
-  std::uint64_t non_manifold = 0, inconsistent = 0;
+  std::uint64_t non_manifold = 0, inconsistent = 0, cut_apart = 0;
   std::size_t first_non_manifold = 0, first_inconsistent = 0;
+  // The two faces of edge uses s1 and s2 (at uses[i]) as neighbours across it.
+  const auto join = [&](std::uint32_t s1, std::uint32_t s2, std::size_t i) {
+    const std::uint32_t t1 = s1 / 3, t2 = s2 / 3;
+    neighbor[s1] = static_cast<int>(t2);
+    neighbor[s2] = static_cast<int>(t1);
+    const Triangle3& a = soup.triangles[t1];
+    const Triangle3& b = soup.triangles[t2];
+    const int from = a[s1 % 3];
+    const int to = a[(s1 % 3 + 1) % 3];
+    if (b[s2 % 3] == from && inconsistent++ == 0) first_inconsistent = i;
+    // The two faces are neighbours in the fans of both edge ends.
+    fans.unite(s1 - s1 % 3 + corner_of(a, from), s2 - s2 % 3 + corner_of(b, from));
+    fans.unite(s1 - s1 % 3 + corner_of(a, to), s2 - s2 % 3 + corner_of(b, to));
+  };
+  std::vector<char> on_cut_edge(repair ? soup.positions.size() : 0, 0);
+  std::vector<std::size_t> cut_edges;  // where each edge cut apart starts in `uses`
   for (std::size_t i = 0; i < uses.size();) {
     std::size_t j = i + 1;
     while (j < uses.size() && uses[j].key == uses[i].key) ++j;
     if (j - i >= 3) {
-      if (non_manifold++ == 0) first_non_manifold = i;
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> sheets;
+      if (repair) sheets = sheets_around_edge(soup, uses[i].key, slots_of(uses, i, j));
+      if (sheets.empty()) {
+        if (non_manifold++ == 0) first_non_manifold = i;
+      } else {
+        for (const auto& [s1, s2] : sheets) join(s1, s2, i);
+        on_cut_edge[uses[i].key >> 32] = on_cut_edge[uses[i].key & 0xffffffffu] = 1;
+        cut_edges.push_back(i);
+        ++cut_apart;
+      }
     } else if (j - i == 2) {
-      const std::uint32_t s1 = uses[i].slot, s2 = uses[i + 1].slot;
-      const std::uint32_t t1 = s1 / 3, t2 = s2 / 3;
-      neighbor[s1] = static_cast<int>(t2);
-      neighbor[s2] = static_cast<int>(t1);
-      const Triangle3& a = soup.triangles[t1];
-      const Triangle3& b = soup.triangles[t2];
-      const int from = a[s1 % 3];
-      const int to = a[(s1 % 3 + 1) % 3];
-      if (b[s2 % 3] == from && inconsistent++ == 0) first_inconsistent = i;
-      // The two faces are neighbours in the fans of both edge ends.
-      fans.unite(s1 - s1 % 3 + corner_of(a, from), s2 - s2 % 3 + corner_of(b, from));
-      fans.unite(s1 - s1 % 3 + corner_of(a, to), s2 - s2 % 3 + corner_of(b, to));
+      join(uses[i].slot, uses[i + 1].slot, i);
     }
     i = j;
   }
@@ -515,6 +701,7 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
     // input vertex): the surface is unchanged and becomes manifold, pieces merely touch there.
     // A fan root is a slot, so it names one fan of one vertex.
     std::unordered_map<std::uint32_t, int> copy_of_fan;
+    std::vector<int> copied_from;
     for (std::size_t slot = 0; slot < 3 * triangles; ++slot) {
       int& corner = soup.triangles[slot / 3][slot % 3];
       const int v = corner;
@@ -526,13 +713,49 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
       if (added) {
         soup.positions.push_back(soup.positions[v]);
         soup.source_vertex.push_back(soup.source_vertex[v]);
+        copied_from.push_back(v);
       }
       corner = it->second;
+    }
+    if (cut_apart > 0) {
+      const double moved = move_copies_apart(soup, on_cut_edge, vertices, copied_from);
+      std::ostringstream what;
+      what << "cut " << counted(cut_apart, "non-manifold edge", "non-manifold edges")
+           << " apart (the faces on each paired into sheets that each pass it as a surface does; "
+              "the copies of its ends moved into their own sheet by at most "
+           << moved << ", so the sheets do not share a point)";
+      repairs.push_back(what.str());
     }
     repairs.push_back(
         "split " + counted(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +
         " into one vertex per fan (" + counted(copy_of_fan.size(), "copy", "copies") + " added)");
-  } else if (non_manifold_vertices > 0) {
+  }
+  // A cut edge whose sheets still meet at both of its ends (their fans there joined by other
+  // faces) is still one edge of three or more faces: an error, as without the cut.
+  std::uint64_t still_joined = 0;
+  std::size_t first_joined = 0;
+  for (std::size_t i : cut_edges) {
+    std::map<std::pair<int, int>, int> faces_on;
+    bool joined = false;
+    for (std::size_t k = i; k < uses.size() && uses[k].key == uses[i].key; ++k) {
+      const Triangle3& t = soup.triangles[uses[k].slot / 3];
+      const int from = t[uses[k].slot % 3], to = t[(uses[k].slot % 3 + 1) % 3];
+      joined = joined || ++faces_on[{std::min(from, to), std::max(from, to)}] > 2;
+    }
+    if (joined && still_joined++ == 0) first_joined = i;
+  }
+  if (still_joined > 0) {
+    std::string faces;
+    for (std::size_t k = first_joined; k < uses.size() && uses[k].key == uses[first_joined].key;
+         ++k)
+      faces += (faces.empty() ? "" : ", ") + face_of_slot(uses[k].slot);
+    throw_invalid(file, "mesh has " +
+                            counted(still_joined, "non-manifold edge", "non-manifold edges") +
+                            " (shared by 3 or more faces) whose sheets meet again at both ends, "
+                            "so they cannot be cut apart there, first at vertices " +
+                            edge_vertices(uses[first_joined].key) + " (faces " + faces + ")");
+  }
+  if (non_manifold_vertices > 0 && !repair) {
     int first = INT_MAX;
     for (std::size_t v = 0; v < vertices; ++v) {
       if (bad_vertex[v]) first = std::min(first, soup.source_vertex[v]);

@@ -38,22 +38,32 @@ DegenerateFaces heal_degenerate_triangles(Soup& soup, double ratio);
 void check_degenerate_triangles(const Soup& soup, const LoadOptions& options,
                                 const std::string& file);
 /// What remove_duplicate_triangles removed: `copies` repeat a face facing the same way;
-/// `folds` are pairs facing opposite ways (both removed).
+/// `folds` are pairs facing opposite ways (both removed); `other_sides` the faces of a
+/// two-sided part beside the one kept of each group.
 struct DuplicateFaces {
   std::size_t copies = 0;
   std::size_t folds = 0;
+  std::size_t other_sides = 0;
 };
 /// Removes triangles over the same three vertices as another: a copy facing the same way is
 /// dropped, and a pair facing opposite ways (a flap folded flat onto itself, of no area: two
 /// quads sharing three corners, each split into triangles, give one) is dropped whole. Of
-/// unequal numbers facing each way, the first facing the way most do is kept.
+/// unequal numbers facing each way, the first facing the way most do is kept. A connected part
+/// whose every face is in such a pair (as many facing each way) is a two-sided surface, each
+/// face written once per side as game models are: of each pair the first face is kept (the
+/// orientation repair then makes them agree).
 DuplicateFaces remove_duplicate_triangles(Soup& soup);
 /// Throws InvalidInputException for two triangles over the same three vertices.
 void check_duplicate_triangles(const Soup& soup, const std::string& file);
 /// Throws InvalidInputException for non-manifold edges and non-orientable components, and without
-/// `repair` for non-manifold vertices and an inconsistent orientation. With `repair`, splits
-/// non-manifold vertices, makes the orientation consistent and closed components face outwards,
-/// adding one line per change to `repairs`.
+/// `repair` for non-manifold vertices and an inconsistent orientation. With `repair`, cuts
+/// non-manifold edges apart (the faces on each paired into sheets: two solids touching along an
+/// edge stay two closed solids; else the flattest pairs, a face left over getting the edge as a
+/// boundary; the sheets' copies of the edge's ends moved into their own sheet by at most 1e-7
+/// of the bounding-box diagonal, so that no later step, which identifies seams by their 3D
+/// points, takes one sheet's edge for the other's; an edge whose sheets still meet at both ends
+/// stays an error), splits non-manifold vertices, makes the orientation consistent and closed
+/// components face outwards, adding one line per change to `repairs`.
 void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
                                std::vector<std::string>& repairs);
 

@@ -188,6 +188,28 @@ TEST(Pieces, ASmallSeparatePartIsNamedAsOne) {
   EXPECT_EQ(separate, 2) << out.report.at("notes").dump();  // the speck: too small and too narrow
 }
 
+// Two boxes touching along an edge (diagonal neighbours in a grid): four faces on each of its
+// segments, which the load used to refuse as non-manifold. It cuts them apart, box by box, and
+// moves one box's copies of the edge's points into it by 1e-7 of the diagonal, so the two boxes'
+// pieces share no seam: every seam edge has one partner of the same length, and the strips
+// are certified against the boxes as given (the move is far under the bound's slack).
+TEST(Pieces, TwoBoxesTouchingAlongAnEdgePrintAsTwoBoxes) {
+  TriangleMesh mesh = box();
+  const TriangleMesh second = box();
+  const auto offset = static_cast<int>(mesh.vertices.size());
+  for (const Vec3& p : second.vertices) mesh.vertices.push_back(p + Vec3(2.0, 1.5, 0.0));
+  for (const auto& t : second.triangles)
+    mesh.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const auto out = run_pipeline(mesh, "2%", "touching_boxes");
+  expect_certified(mesh, out);
+  expect_exact_seams(out);
+  EXPECT_NE(out.report.at("notes").dump().find("non-manifold edges apart"), std::string::npos)
+      << out.report.at("notes").dump();
+  const auto notes = out.report.at("notes").dump();
+  EXPECT_EQ(notes.find("do not match"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("no partner edge"), std::string::npos) << notes;
+}
+
 // Without limits the same run may keep small pieces: the bound is what removes them.
 TEST(Pieces, LimitsOffKeepTheRefinementFree) {
   const TriangleMesh mesh =

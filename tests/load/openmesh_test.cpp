@@ -155,6 +155,14 @@ class LoadOpenMeshTest : public ::testing::Test {
     return message;
   }
 
+  // Two closed tetrahedra apart: 8 vertices, 8 faces, two components, no boundary.
+  static void expect_two_closed_tetrahedra(const LoadedMesh& loaded) {
+    EXPECT_EQ(loaded.mesh.n_vertices(), 8u);
+    EXPECT_EQ(loaded.mesh.n_faces(), 8u);
+    EXPECT_EQ(connected_components(loaded.mesh), 2);
+    EXPECT_TRUE(boundary_loops(loaded.mesh).empty());
+    EXPECT_EQ(euler_characteristic(loaded.mesh), 4);
+  }
   static void expect_closed_tetrahedron(const LoadedMesh& loaded) {
     EXPECT_EQ(loaded.mesh.n_vertices(), 4u);
     EXPECT_EQ(loaded.mesh.n_faces(), 4u);
@@ -605,11 +613,59 @@ TEST_F(LoadOpenMeshTest, OutOfRangeIndex) {
 }
 
 TEST_F(LoadOpenMeshTest, EdgeSharedByThreeFaces) {
-  // Three triangles hinge on edge 0-1.
-  expect_error<InvalidInputException>(write("fin.off",
-                                            "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n"
-                                            "3 0 1 2\n3 1 0 3\n3 0 1 4\n"),
-                                      {"1 non-manifold edge", "vertices 0-1", "faces 0, 1, 2"});
+  // Three triangles hinge on edge 0-1: two lie flat in z = 0, a fin stands up between them.
+  const fs::path fin = write("fin.off",
+                             "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n"
+                             "3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  LoadOptions strict;
+  strict.repair = false;
+  expect_error<InvalidInputException>(fin, {"1 non-manifold edge", "vertices 0-1", "faces 0, 1, 2"},
+                                      strict);
+  // Repaired: the flattest pair (the two in z = 0) stays joined across the edge; the fin gets
+  // the edge as a boundary, with its own copies of 0 and 1 moved into it.
+  const LoadedMesh loaded = load_mesh(fin);
+  EXPECT_EQ(loaded.mesh.n_faces(), 3u);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 7u);
+  EXPECT_EQ(connected_components(loaded.mesh), 2);
+  std::size_t joined = 0;
+  for (auto e : loaded.mesh.edges()) {
+    if (loaded.mesh.is_boundary(e)) continue;
+    ++joined;  // the edge 0-1 between the flat two: no corner of either is raised
+    for (auto h : {e.h0(), e.h1()})
+      for (auto v : h.face().vertices()) EXPECT_LE(loaded.mesh.point(v)[2], 0.0);
+  }
+  EXPECT_EQ(joined, 1u);
+}
+
+// Two closed tetrahedra touching along edge 0-1, each on its own side (the second is the
+// first turned half a turn about that edge): four faces on the edge, two of each solid. The
+// repair pairs them by solid, so each stays closed, and moves the second's copies of 0 and 1
+// into it by at most 1e-7 of the diagonal, so the two share no point; without the repair it
+// is an error, as before.
+TEST_F(LoadOpenMeshTest, TwoSolidsTouchingAlongAnEdgeAreCutApart) {
+  const fs::path path = write("touching.off",
+                              "OFF\n6 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 -1 0\n0 0 -1\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
+                              "3 0 4 1\n3 0 1 5\n3 0 5 4\n3 1 4 5\n");
+  LoadOptions strict;
+  strict.repair = false;
+  expect_error<InvalidInputException>(path, {"non-manifold edge", "vertices 0-1"}, strict);
+  const LoadedMesh loaded = load_mesh(path);
+  expect_two_closed_tetrahedra(loaded);
+  EXPECT_NEAR(surface_area(loaded.mesh), 2 * (1.5 + std::sqrt(3.0) / 2.0), 1e-6);
+  int copies = 0;
+  for (auto v : loaded.mesh.vertices()) {
+    const int input = input_vertex_of(loaded.mesh, v);
+    if (input > 1) continue;
+    const OpenMesh::Vec3d file_point(input == 1 ? 1.0 : 0.0, 0.0, 0.0);
+    const double moved = (loaded.mesh.point(v) - file_point).norm();
+    EXPECT_LE(moved, 3e-7 * (1 + 1e-12));  // the diagonal of [0,1] x [-1,1] x [-1,1] is 3
+    copies += moved > 0.0;
+  }
+  EXPECT_EQ(copies, 2);  // one copy of each end moved; the originals stay
+  ASSERT_FALSE(loaded.repairs.empty());
+  EXPECT_NE(loaded.repairs[0].find("cut 1 non-manifold edge apart"), std::string::npos)
+      << loaded.repairs[0];
 }
 
 TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
@@ -625,11 +681,7 @@ TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
   expect_error<InvalidInputException>(path, {"1 non-manifold vertex", "first vertex 0"}, strict);
   // Repaired: vertex 0 is split, one copy per tetrahedron.
   const LoadedMesh loaded = load_mesh(path);
-  EXPECT_EQ(loaded.mesh.n_vertices(), 8u);
-  EXPECT_EQ(loaded.mesh.n_faces(), 8u);
-  EXPECT_EQ(connected_components(loaded.mesh), 2);
-  EXPECT_TRUE(boundary_loops(loaded.mesh).empty());
-  EXPECT_EQ(euler_characteristic(loaded.mesh), 4);
+  expect_two_closed_tetrahedra(loaded);
   int copies_of_zero = 0;
   for (auto v : loaded.mesh.vertices()) {
     if (input_vertex_of(loaded.mesh, v) == 0) {
@@ -785,10 +837,37 @@ TEST_F(LoadOpenMeshTest, AFlapFoldedFlatOntoItselfIsRemovedWhole) {
   EXPECT_EQ(three.repairs.size(), 1u);
 }
 
-TEST_F(LoadOpenMeshTest, ASurfaceDoubledBackOnItselfIsAnError) {
-  expect_error<InvalidInputException>(
-      write("doubled.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n"),
-      {"doubled.off", "no faces left", "facing the other way"});
+TEST_F(LoadOpenMeshTest, ATwoSidedSurfaceKeepsOneSide) {
+  // Every face written once facing each way, as game models do for a surface seen from both
+  // sides: one of each pair stays.
+  LoadOptions strict;
+  strict.repair = false;
+  // A square sheet: two triangles, each also written the other way.
+  const fs::path sheet = write("sheet.off",
+                               "OFF\n4 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                               "3 0 1 2\n3 0 2 3\n3 2 1 0\n3 3 2 0\n");
+  const LoadedMesh square = load_mesh(sheet);
+  EXPECT_EQ(square.mesh.n_faces(), 2u);
+  EXPECT_NEAR(surface_area(square.mesh), 1.0, 1e-12);
+  EXPECT_EQ(boundary_loops(square.mesh).size(), 1u);
+  EXPECT_EQ(square.repairs, (std::vector<std::string>{
+                                "kept one side of a two-sided surface (every face written once "
+                                "facing each way): removed 2 faces"}));
+  expect_error<InvalidInputException>(sheet, {"sheet.off", "duplicate"}, strict);
+  // A closed tetrahedron written twice, the second time facing inwards and its faces first:
+  // the faces kept face both ways, and the orientation repair turns them outwards.
+  auto face = [](int a, int b, int c) {
+    return std::to_string(3) + " " + std::to_string(a) + " " + std::to_string(b) + " " +
+           std::to_string(c) + "\n";
+  };
+  const auto& f = kTetraFaces;
+  std::string both = tetra_off("", "", 0, 4);
+  both.insert(both.find(face(f[0][0], f[0][1], f[0][2])),
+              face(f[0][2], f[0][1], f[0][0]) + face(f[1][2], f[1][1], f[1][0]));
+  both += face(f[2][2], f[2][1], f[2][0]) + face(f[3][2], f[3][1], f[3][0]);
+  const LoadedMesh tetra = load_mesh(write("two_sided.off", both));
+  expect_closed_tetrahedron(tetra);
+  // A tetrahedron with a flap is one-sided: the flap goes whole (AFlapFoldedFlatOntoItself...).
 }
 
 TEST_F(LoadOpenMeshTest, NonConvexPolygonIsEarClipped) {
