@@ -137,18 +137,23 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
   loaded.input_faces = scan.faces;
   const bool vertices_match = scan.format == Format::stl ? raw.positions.size() <= scan.vertices
                                                          : raw.positions.size() == scan.vertices;
-  // OpenMesh's STL reader drops a triangle two of whose corners coincide.
-  const std::uint64_t faces = scan.faces - scan.stl_degenerate;
-  const std::uint64_t corners = scan.corners - 3 * scan.stl_degenerate;
+  // OpenMesh's readers drop faces of no area: an STL triangle two of whose corners coincide, an
+  // OBJ face of fewer than 3 distinct vertices.
+  const std::uint64_t faces = scan.faces - scan.dropped_faces;
+  const std::uint64_t corners = scan.corners - scan.dropped_corners;
   if (!vertices_match || raw.n_faces() != faces || raw.corners.size() != corners) {
     throw_io(file, "OpenMesh's reader returned " + declared(raw.positions.size(), raw.n_faces()) +
                        " (" + std::to_string(raw.corners.size()) + " corners), but the file has " +
                        declared(scan.vertices, faces) + " (" + std::to_string(corners) +
                        " corners): it misread the file");
   }
-  if (scan.stl_degenerate > 0) {
-    loaded.repairs.push_back("removed " + counted(scan.stl_degenerate, "triangle", "triangles") +
-                             " two of whose corners coincide (no area)");
+  if (scan.dropped_faces > 0) {
+    loaded.repairs.push_back("removed " +
+                             (scan.format == Format::stl
+                                  ? counted(scan.dropped_faces, "triangle", "triangles") +
+                                        " two of whose corners coincide (no area)"
+                                  : counted(scan.dropped_faces, "face", "faces") +
+                                        " of fewer than 3 distinct vertices (no area)"));
   }
   if (scan.format == Format::stl && raw.positions.size() < scan.vertices) {
     loaded.repairs.push_back("merged " +
@@ -156,7 +161,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
                                      "exactly duplicate vertex", "exactly duplicate vertices") +
                              " (an STL stores every triangle corner separately)");
   }
-  check_raw_faces(raw, file);
+  check_raw_faces(raw, file, options.repair);
 
   // Texture coordinates: per corner (OBJ) when every face has them, else per vertex (PLY, OFF)
   // when every vertex has them.
@@ -217,7 +222,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
     if (degenerate.collapsed > 0) {
       loaded.repairs.push_back(
           "removed " + counted(degenerate.collapsed, "face", "faces") +
-          " whose corners were merged into one another (exactly duplicate vertices)");
+          " with a corner repeated (in the file, or once duplicate vertices were merged)");
     }
     if (degenerate.flat > 0) {
       loaded.repairs.push_back(

@@ -27,9 +27,11 @@ struct Prescan {
   std::string ply_texture;                 // PLY "comment TextureFile <name>"
   bool off_comments = false;               // an ascii OFF with '#' comments
   std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
-  /// STL triangles two of whose corners coincide, which OpenMesh's reader drops (counted in
-  /// `faces`): with the repair on, their removal is logged; without it they are an error.
-  std::uint64_t stl_degenerate = 0;
+  /// Faces of no area that OpenMesh's reader drops, counted in `faces` and `corners` (STL
+  /// triangles two of whose corners coincide, OBJ faces of fewer than 3 distinct vertices): with
+  /// the repair on, their removal is logged; without it they are an error.
+  std::uint64_t dropped_faces = 0;
+  std::uint64_t dropped_corners = 0;
   /// The pre-scan read the records itself (a plain ascii OFF or binary PLY, given a RawMesh):
   /// OpenMesh's reader is not needed.
   bool read_natively = false;
@@ -50,8 +52,9 @@ void check_some_faces(const std::string& file, const Prescan& scan);
 // starting with `file`) for what OpenMesh's reader would misread, drop or refuse; an IOException
 // comes from the scanner.
 
-/// OBJ: every v, vt and f line parsed; faces OpenMesh would drop or shrink refused; the first
-/// mtllib resolved against `path`'s folder.
+/// OBJ: every v, vt and f line parsed; faces OpenMesh would shrink refused, and those it would
+/// drop (fewer than 3 distinct vertices) counted in `dropped_faces`, an error without
+/// options.repair; the first mtllib resolved against `path`'s folder.
 Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesystem::path& path,
                     const LoadOptions& options);
 /// OFF, ascii or "OFF BINARY": the header, the counts against the file size, every record.
@@ -68,7 +71,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
 Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options,
                     RawMesh* raw = nullptr);
 /// STL, binary when the size is 84 + 50 * triangles, else ascii: every triangle's corners; those
-/// with two corners the same (no area) are counted in `stl_degenerate`, an error without
+/// with two corners the same (no area) are counted in `dropped_faces`, an error without
 /// options.repair.
 Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions& options);
 

@@ -63,9 +63,14 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
       }
       std::vector<std::int64_t> sorted = face;
       std::sort(sorted.begin(), sorted.end());
-      // OpenMesh silently drops a face with fewer than 3 distinct vertices and shrinks one that
-      // repeats a vertex (but not its texture coordinates).
-      if (face.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      const auto distinct =
+          static_cast<std::size_t>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
+      // OpenMesh silently drops a face with fewer than 3 distinct vertices (no area: with the
+      // repair, logged) and shrinks one that repeats a vertex (but not its texture coordinates).
+      if (distinct < 3 && options.repair) {
+        ++scan.dropped_faces;
+        scan.dropped_corners += face.size();
+      } else if (distinct < face.size() || face.size() < 3) {
         if (degenerate++ == 0) first_degenerate_line = in.line_number();
       }
       ++scan.faces;

@@ -58,7 +58,8 @@ Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions&
     }
     if (degenerate > 0 && !options.repair)
       throw_invalid(file, degenerate_triangles_message(degenerate, first_degenerate));
-    scan.stl_degenerate = degenerate;
+    scan.dropped_faces = degenerate;
+    scan.dropped_corners = 3 * degenerate;
     scan.vertices = 3 * scan.faces;
     scan.corners = 3 * scan.faces;
     return scan;
@@ -143,7 +144,8 @@ Prescan prescan_stl(FileScanner& in, const std::string& file, const LoadOptions&
   check_some_faces(file, scan);
   if (degenerate > 0 && !options.repair)
     throw_invalid(file, degenerate_triangles_message(degenerate, first_degenerate));
-  scan.stl_degenerate = degenerate;
+  scan.dropped_faces = degenerate;
+  scan.dropped_corners = 3 * degenerate;
   scan.vertices = 3 * scan.faces;
   scan.corners = 3 * scan.faces;
   return scan;

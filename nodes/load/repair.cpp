@@ -48,7 +48,7 @@ void compact_vertices(Soup& soup, const std::vector<int>& target) {
 
 }  // namespace
 
-void check_raw_faces(const RawMesh& raw, const std::string& file) {
+void check_raw_faces(const RawMesh& raw, const std::string& file, bool repair) {
   const std::size_t vertices = raw.positions.size();
   std::uint64_t non_finite = 0, short_faces = 0, out_of_range = 0, repeated = 0;
   std::size_t first_non_finite = 0, first_short = 0, first_out = 0, first_repeated = 0;
@@ -84,7 +84,7 @@ void check_raw_faces(const RawMesh& raw, const std::string& file) {
         bad = true;
       }
     }
-    if (bad) continue;
+    if (bad || (repair && end - begin == 3)) continue;  // a triangle of no area: healed
     for (std::size_t c = begin; c < end && !bad; ++c) {
       for (std::size_t d = c + 1; d < end; ++d) {
         if (raw.corners[c] == raw.corners[d]) {

@@ -13,8 +13,9 @@
 namespace papercraft::load_internal {
 
 /// Throws InvalidInputException for non-finite positions, faces with fewer than 3 vertices,
-/// out-of-range vertex indices or a vertex repeated in a face.
-void check_raw_faces(const RawMesh& raw, const std::string& file);
+/// out-of-range vertex indices or a vertex repeated in a face (but for a triangle with
+/// `repair`: heal_degenerate_triangles drops it).
+void check_raw_faces(const RawMesh& raw, const std::string& file, bool repair = false);
 /// Removes the vertices no triangle uses; returns how many.
 std::size_t remove_unreferenced_vertices(Soup& soup);
 /// Merges each vertex into an earlier one whose coordinates all differ from it by at most

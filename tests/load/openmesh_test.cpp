@@ -710,12 +710,36 @@ TEST_F(LoadOpenMeshTest, DegenerateFaces) {
                                       "removed 2 vertices used only by the faces removed"}));
   expect_error<InvalidInputException>(
       collinear, {"1 degenerate (zero-area) face", "first face 4", "vertices 1, 4, 5"}, strict);
-  // A repeated corner.
-  expect_error<InvalidInputException>(write("repeated.off", tetra_off("", "3 1 2 2\n", 0, 1)),
-                                      {"degenerate", "face 4"});
-  expect_error<InvalidInputException>(
-      write("repeated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 2\n"),
-      {"1 degenerate face", "line 5"});
+  // A triangle with a repeated corner (no area): dropped by the repair, else an error.
+  const fs::path repeated_off = write("repeated.off", tetra_off("", "3 1 2 2\n", 0, 1));
+  expect_error<InvalidInputException>(repeated_off, {"degenerate", "face 4"}, strict);
+  const LoadedMesh off = load_mesh(repeated_off);
+  expect_closed_tetrahedron(off);
+  EXPECT_EQ(off.repairs,
+            (std::vector<std::string>{"removed 1 face with a corner repeated (in the file, or once "
+                                      "duplicate vertices were merged)"}));
+  // In an OBJ, a face of fewer than 3 distinct vertices (OpenMesh's reader drops it), here
+  // between faces with texture coordinates (each corner's UV its x and y): the faces after it
+  // keep their own.
+  std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 0\nvt 0 1\nvt 0 0\n";
+  for (const auto& f : kTetraFaces) {
+    obj += "f";
+    for (int v : f) obj += " " + std::to_string(v + 1) + "/" + std::to_string(v + 1);
+    obj += &f == &kTetraFaces[1] ? "\nf 2/2 3/3 3/3\nf 2/2 3/3\n" : "\n";
+  }
+  const fs::path repeated_obj = write("repeated.obj", obj);
+  expect_error<InvalidInputException>(repeated_obj, {"2 degenerate faces", "line 11"}, strict);
+  const LoadedMesh with_uvs = load_mesh(repeated_obj);
+  expect_closed_tetrahedron(with_uvs);
+  EXPECT_EQ(
+      with_uvs.repairs,
+      (std::vector<std::string>{"removed 2 faces of fewer than 3 distinct vertices (no area)"}));
+  ASSERT_TRUE(with_uvs.has_uvs);
+  EXPECT_EQ(with_uvs.uv_seam_vertices, 0u);
+  for (auto v : with_uvs.mesh.vertices()) {
+    const auto p = with_uvs.mesh.point(v);
+    EXPECT_EQ(with_uvs.mesh.texcoord2D(v), Mesh::TexCoord2D(p[0], p[1]));
+  }
   // Two corners of an STL triangle coincide (OpenMesh's reader drops it): without the repair
   // an error naming it; with it, the removal is logged and the tetrahedron lacks that face.
   std::string stl = tetra_stl_binary("binary");
