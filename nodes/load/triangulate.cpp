@@ -1,5 +1,6 @@
 // Triangulation of the file's faces: fans, ear clipping for polygons a fan would fold over, and
-// for a twisted quad (no ear to clip) the diagonal that folds least.
+// for a twisted quad or another polygon out of its plane with no ear to clip, the triangulation
+// that folds least.
 
 #include "nodes/load/triangulate.h"
 
@@ -7,6 +8,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -61,21 +64,70 @@ bool ear_clip(const Vec3d* const* points, std::size_t size, const Vec3d& normal,
   return true;
 }
 
-// The two triangles of quad 0-1-2-3 over the diagonal 0-2 or 1-3, whichever gives triangles
-// whose normals agree most (the cosine of the angle between them; a triangle of no area
-// agrees with nothing).
-std::vector<std::array<std::size_t, 3>> least_folded_split(const Vec3d* const* points) {
-  auto normal = [&](std::size_t a, std::size_t b, std::size_t c) {
-    return cross(*points[b] - *points[a], *points[c] - *points[a]);
+// Of every triangulation of the polygon 0..size-1 (size at most kMostFolded: 132 of them for 8
+// corners), the one whose worst fold is least: the least, over its diagonals, of the cosine of
+// the angle between the normals of the two triangles on either side (a triangle of no area
+// agrees with nothing). For a twisted quad (a bow tie seen along its normal) it is the diagonal
+// whose two triangles fold least.
+constexpr std::size_t kMostFolded = 8;
+
+std::vector<std::array<std::size_t, 3>> least_folded_triangulation(const Vec3d* const* points,
+                                                                   std::size_t size) {
+  using Triangles = std::vector<std::array<std::size_t, 3>>;
+  auto normal = [&](const std::array<std::size_t, 3>& t) {
+    return cross(*points[t[1]] - *points[t[0]], *points[t[2]] - *points[t[0]]);
   };
   auto agreement = [&](const Vec3d& m, const Vec3d& n) {
     const double lengths = std::sqrt(OpenMesh::dot(m, m) * OpenMesh::dot(n, n));
     return lengths > 0.0 ? OpenMesh::dot(m, n) / lengths : -2.0;
   };
-  const double over_02 = agreement(normal(0, 1, 2), normal(0, 2, 3));
-  const double over_13 = agreement(normal(0, 1, 3), normal(1, 2, 3));
-  if (over_02 >= over_13) return {{0, 1, 2}, {0, 2, 3}};
-  return {{0, 1, 3}, {1, 2, 3}};
+  // Every triangulation of the corners first..last (in order): the triangle on the edge
+  // first-last and the corner k between, then those of the two sides.
+  const std::function<std::vector<Triangles>(std::size_t, std::size_t)> all =
+      [&](std::size_t first, std::size_t last) -> std::vector<Triangles> {
+    if (last - first < 2) return {Triangles{}};
+    std::vector<Triangles> result;
+    for (std::size_t k = first + 1; k < last; ++k)
+      for (const Triangles& left : all(first, k))
+        for (const Triangles& right : all(k, last)) {
+          Triangles t = left;
+          t.insert(t.end(), right.begin(), right.end());
+          t.push_back({first, k, last});
+          result.push_back(std::move(t));
+        }
+    return result;
+  };
+  Triangles best;
+  double best_worst = -3.0;
+  for (const Triangles& triangulation : all(0, size - 1)) {
+    double worst = 1.0;
+    for (std::size_t i = 0; i < triangulation.size(); ++i)
+      for (std::size_t j = i + 1; j < triangulation.size(); ++j) {
+        int shared = 0;
+        for (std::size_t a : triangulation[i])
+          for (std::size_t b : triangulation[j]) shared += a == b;
+        if (shared == 2)
+          worst = std::min(worst, agreement(normal(triangulation[i]), normal(triangulation[j])));
+      }
+    if (worst > best_worst) best = triangulation, best_worst = worst;
+  }
+  return best;
+}
+
+// Whether the polygon's corners lie in one plane (within 1e-9 of its extent) across `normal`:
+// a self-intersecting polygon in a plane has no triangulation that does not fold over itself.
+bool planar(const Vec3d* const* points, std::size_t size, const Vec3d& normal) {
+  const double length = OpenMesh::norm(normal);
+  if (!(length > 0.0)) return true;
+  const Vec3d n = normal / length;
+  double low = std::numeric_limits<double>::infinity(), high = -low, extent = 0.0;
+  for (std::size_t i = 0; i < size; ++i) {
+    const double height = OpenMesh::dot(*points[i], n);
+    low = std::min(low, height), high = std::max(high, height);
+    for (std::size_t j = i + 1; j < size; ++j)
+      extent = std::max(extent, OpenMesh::norm(*points[j] - *points[i]));
+  }
+  return high - low <= 1e-9 * extent;
 }
 
 }  // namespace
@@ -86,7 +138,8 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
   soup.triangles.reserve(raw.corners.size() >= 2 * raw.n_faces()
                              ? raw.corners.size() - 2 * raw.n_faces()
                              : raw.n_faces());
-  std::uint64_t polygons = 0, non_convex = 0, self_intersecting = 0, twisted_quads = 0;
+  std::uint64_t polygons = 0, non_convex = 0, self_intersecting = 0, twisted_quads = 0,
+                twisted_polygons = 0;
   std::size_t first_self_intersecting = 0;
   std::vector<const Vec3d*> points;
   std::vector<std::array<std::size_t, 3>> ears;
@@ -112,14 +165,16 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
         points.resize(size);
         for (std::size_t i = 0; i < size; ++i) points[i] = &raw.positions[corner[i]];
         if (!ear_clip(points.data(), size, normal, ears)) {
-          if (size != 4) {
+          // A twisted quad (a bowtie seen along its normal) or another polygon out of its plane
+          // that folds over itself seen along its normal (a square with a corner raised):
+          // triangulated so that its triangles fold least against each other. One in its plane
+          // crosses itself: an error.
+          if (size > kMostFolded || (size > 4 && planar(points.data(), size, normal))) {
             if (self_intersecting++ == 0) first_self_intersecting = f;
             continue;
           }
-          // A twisted quad (a bowtie seen along its normal): split along the diagonal whose
-          // two triangles fold least against each other.
-          ++twisted_quads;
-          ears = least_folded_split(points.data());
+          ++(size == 4 ? twisted_quads : twisted_polygons);
+          ears = least_folded_triangulation(points.data(), size);
         }
         for (const auto& ear : ears) {
           soup.triangles.push_back({corner[ear[0]], corner[ear[1]], corner[ear[2]]});
@@ -149,13 +204,18 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
             " (no ear to clip), first face " + std::to_string(first_self_intersecting) +
             "; triangulate it before loading");
   }
-  if (non_convex > twisted_quads) {
-    repairs.push_back("ear-clipped " + counted(non_convex - twisted_quads, "non-convex polygon",
-                                               "non-convex polygons"));
+  if (non_convex > twisted_quads + twisted_polygons) {
+    repairs.push_back("ear-clipped " + counted(non_convex - twisted_quads - twisted_polygons,
+                                               "non-convex polygon", "non-convex polygons"));
   }
   if (twisted_quads > 0) {
     repairs.push_back("split " + counted(twisted_quads, "twisted quad", "twisted quads") +
                       " (self-intersecting seen along its normal) along the diagonal whose two "
+                      "triangles fold least");
+  }
+  if (twisted_polygons > 0) {
+    repairs.push_back("triangulated " + counted(twisted_polygons, "polygon", "polygons") +
+                      " out of its plane that crossed itself seen along its normal so that its "
                       "triangles fold least");
   }
   if (soup.triangles.size() > options.max_faces) {

@@ -919,6 +919,47 @@ TEST_F(LoadOpenMeshTest, NonConvexPolygonIsEarClipped) {
       {"1 self-intersecting polygon", "first face 0"});
 }
 
+// A pentagon out of its plane (trimesh's polygonfaces.obj: a square with a fifth corner raised
+// above one side) has no ear to clip seen along its normal, but is no bow tie in a plane: it is
+// triangulated so that its worst fold is least. Every triangulation of a pentagon is a fan from
+// one corner; the one loaded folds no worse than the best of them.
+TEST_F(LoadOpenMeshTest, APolygonOutOfItsPlaneIsTriangulatedFoldingLeast) {
+  const double p[5][3] = {
+      {-500, 0, 500}, {500, 0, 500}, {500, 0, -500}, {-500, 0, -500}, {0, 500, -500}};
+  std::string obj;
+  for (const auto& q : p)
+    obj += "v " + std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) +
+           "\n";
+  const LoadedMesh loaded = load_mesh(write("raised.obj", obj + "f 1 2 3 4 5\n"));
+  ASSERT_EQ(loaded.mesh.n_faces(), 3u);
+  EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(),
+                      "triangulated 1 polygon out of its plane that crossed itself seen along its "
+                      "normal so that its triangles fold least"),
+            loaded.repairs.end());
+  const auto point = [&](int i) { return Vec3(p[i][0], p[i][1], p[i][2]); };
+  const auto unit_normal = [&](int a, int b, int c) {
+    return (point(b) - point(a)).cross(point(c) - point(a)).normalized();
+  };
+  // The worst fold of the fan from corner k: triangles (k, k+1, k+2), (k, k+2, k+3),
+  // (k, k+3, k+4), neighbours over the diagonals k-(k+2) and k-(k+3).
+  double best = -2.0;
+  for (int k = 0; k < 5; ++k) {
+    const Vec3 a = unit_normal(k, (k + 1) % 5, (k + 2) % 5);
+    const Vec3 b = unit_normal(k, (k + 2) % 5, (k + 3) % 5);
+    const Vec3 c = unit_normal(k, (k + 3) % 5, (k + 4) % 5);
+    best = std::max(best, std::min(a.dot(b), b.dot(c)));
+  }
+  double worst = 1.0;
+  for (auto e : loaded.mesh.edges()) {
+    if (loaded.mesh.is_boundary(e)) continue;
+    const auto m = loaded.mesh.calc_face_normal(e.h0().face());
+    const auto n = loaded.mesh.calc_face_normal(e.h1().face());
+    worst = std::min(worst, static_cast<double>(OpenMesh::dot(m, n)));
+  }
+  EXPECT_NEAR(worst, best, 1e-6);
+  EXPECT_GT(best, -0.5);  // no fan folds it flat onto itself
+}
+
 TEST_F(LoadOpenMeshTest, ATwistedQuadIsSplitAlongTheDiagonalThatFoldsLeast) {
   // Face 4596 of the Beast (common-3d-test-models): seen along its Newell normal, a bow tie
   // (no ear to clip). Either diagonal folds it sharply: the cosine between the two triangles'
