@@ -1088,6 +1088,76 @@ int smallest_below(const std::vector<FlatStrip>& strips, double bound,
 
 }  // namespace
 
+std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> strips,
+                                                     std::size_t* dropped) {
+  validate(strips, {});
+  if (dropped) *dropped = 0;
+  // Each triangle by its sorted 3D corners; every occurrence after the first is marked.
+  std::set<std::array<double, 9>> seen;
+  std::vector<std::vector<char>> twice(strips.size());
+  bool any = false;
+  for (std::size_t s = 0; s < strips.size(); ++s) {
+    const FlatStrip& strip = strips[s];
+    twice[s].assign(strip.triangles.size(), 0);
+    for (std::size_t t = 0; t < strip.triangles.size(); ++t) {
+      std::array<std::array<double, 3>, 3> c;
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& p = strip.vertices3d[strip.triangles[t][k]];
+        c[k] = {p.x(), p.y(), p.z()};
+      }
+      std::sort(c.begin(), c.end());
+      if (!seen.insert({c[0][0], c[0][1], c[0][2], c[1][0], c[1][1], c[1][2], c[2][0], c[2][1],
+                        c[2][2]})
+               .second)
+        twice[s][t] = any = 1;
+    }
+  }
+  if (!any) return strips;
+  std::vector<FlatStrip> result;
+  result.reserve(strips.size());
+  for (std::size_t s = 0; s < strips.size(); ++s) {
+    FlatStrip& strip = strips[s];
+    const std::size_t count =
+        static_cast<std::size_t>(std::count(twice[s].begin(), twice[s].end(), 1));
+    if (count == 0) {
+      result.push_back(std::move(strip));
+      continue;
+    }
+    std::vector<Triangle> kept;
+    std::set<int> touched;  // corners of the triangles dropped
+    for (std::size_t t = 0; t < strip.triangles.size(); ++t) {
+      if (!twice[s][t])
+        kept.push_back(strip.triangles[t]);
+      else
+        touched.insert(strip.triangles[t].begin(), strip.triangles[t].end());
+    }
+    if (kept.empty()) {  // printed whole by the strips before it
+      if (dropped) *dropped += count;
+      continue;
+    }
+    // Kept only where what is left is one piece, joined across edges, and a surface at every
+    // corner the triangles dropped had (no two fans meeting at a point).
+    std::map<std::pair<int, int>, std::size_t> edge_of;
+    UnionFind pieces(kept.size());
+    for (std::size_t t = 0; t < kept.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int a = kept[t][k], b = kept[t][(k + 1) % 3];
+        const auto [it, added] = edge_of.try_emplace({std::min(a, b), std::max(a, b)}, t);
+        if (!added) pieces.unite(it->second, t);
+      }
+    bool whole = true;
+    for (std::size_t t = 1; t < kept.size() && whole; ++t) whole = pieces.find(t) == pieces.find(0);
+    for (int corner : touched) whole = whole && one_fan(kept, corner);
+    if (!whole) {
+      result.push_back(std::move(strip));
+      continue;
+    }
+    result.push_back(sub_strip(strip, kept));
+    if (dropped) *dropped += count;
+  }
+  return result;
+}
+
 std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double min_area,
                                          const MergeOptions& options, std::vector<int>* left,
                                          double min_width) {

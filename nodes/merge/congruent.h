@@ -4,6 +4,7 @@
 //
 // Example (node config): merge: {impl: merge.congruent, to: [layout]}
 
+#include <cstddef>
 #include <vector>
 
 #include "core/strip.h"
@@ -52,6 +53,20 @@ struct MergeOptions {
 /// would have allowed; chains must share vertices exactly (no collinear sub-segments).
 std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
                                        const MergeOptions& options = {});
+
+/// Drops the triangles printed twice: a triangle whose three 3D corners are those of a triangle
+/// before it (in an earlier strip, or earlier in the same one) is taken out of its strip. The
+/// strips of two parts can both cover the same stretch of surface between them: the ruled
+/// approximation of each fills the space between the points of their shared cut where the cut
+/// zigzags (a flat region where the harmonic field hardly varies, on CAD models), so both pieces
+/// would print the same triangles and their seams could not be told apart. The union of the
+/// strips, so the certified distance, is unchanged. A strip left empty goes; one that would fall
+/// apart or meet itself at a point keeps its triangles (and so the double cover). The rest of
+/// each strip keeps its layout; its boundary is recomputed. `dropped` (when given) gets the
+/// number of triangles taken out.
+/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> strips,
+                                                     std::size_t* dropped = nullptr);
 
 /// Joins each flat strip of less than `min_area` (model units squared) to a neighbour, the
 /// smallest first: Y moved rigidly so that one edge it shares with X lies on X's image of it

@@ -112,6 +112,17 @@ void register_merge_congruent(Registry& registry) {
                   return make_body([options](const Envelope& in, Emitter& out) {
                     ModelStrips strips =
                         collect_model_strips(in.get<Gathered>().as<UnfoldedStrip>());
+                    std::size_t twice = 0;
+                    strips.flat = drop_double_covered_triangles(std::move(strips.flat), &twice);
+                    if (twice > 0) {
+                      const std::string text = "dropped " + std::to_string(twice) +
+                                               (twice == 1 ? " triangle" : " triangles") +
+                                               " that an earlier piece prints too (the same three "
+                                               "points: the strips of two parts "
+                                               "can both cover a stretch of surface between them)";
+                      in.model->note(text);
+                      spdlog::info("{}: {}", in.model->name, text);
+                    }
                     strips.flat = merge_congruent(std::move(strips.flat), options);
                     const PieceLimits limits = in.model->piece_limits();
                     std::vector<int> small;
