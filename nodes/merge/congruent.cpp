@@ -1113,6 +1113,8 @@ std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> stri
     }
   }
   if (!any) return strips;
+  int next_id = 0;
+  for (const FlatStrip& strip : strips) next_id = std::max(next_id, strip.id + 1);
   std::vector<FlatStrip> result;
   result.reserve(strips.size());
   for (std::size_t s = 0; s < strips.size(); ++s) {
@@ -1135,8 +1137,10 @@ std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> stri
       if (dropped) *dropped += count;
       continue;
     }
-    // Kept only where what is left is one piece, joined across edges, and a surface at every
-    // corner the triangles dropped had (no two fans meeting at a point).
+    // What is left, in its pieces joined across edges (a strip the triangles crossed falls
+    // apart: each piece is a strip, the largest keeping the id, the others new ids). Kept only
+    // where each piece is a surface at every corner the triangles dropped had (no two fans
+    // meeting at a point).
     std::map<std::pair<int, int>, std::size_t> edge_of;
     UnionFind pieces(kept.size());
     for (std::size_t t = 0; t < kept.size(); ++t)
@@ -1145,14 +1149,28 @@ std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> stri
         const auto [it, added] = edge_of.try_emplace({std::min(a, b), std::max(a, b)}, t);
         if (!added) pieces.unite(it->second, t);
       }
-    bool whole = true;
-    for (std::size_t t = 1; t < kept.size() && whole; ++t) whole = pieces.find(t) == pieces.find(0);
-    for (int corner : touched) whole = whole && one_fan(kept, corner);
-    if (!whole) {
+    std::map<std::size_t, std::vector<Triangle>> by_piece;
+    for (std::size_t t = 0; t < kept.size(); ++t) by_piece[pieces.find(t)].push_back(kept[t]);
+    bool surface = true;
+    for (const auto& [root, triangles] : by_piece)
+      for (int corner : touched) {
+        const bool has = std::any_of(triangles.begin(), triangles.end(), [&](const Triangle& t) {
+          return std::find(t.begin(), t.end(), corner) != t.end();
+        });
+        surface = surface && (!has || one_fan(triangles, corner));
+      }
+    if (!surface) {
       result.push_back(std::move(strip));
       continue;
     }
-    result.push_back(sub_strip(strip, kept));
+    std::vector<std::vector<Triangle>> ordered;
+    for (auto& [root, triangles] : by_piece) ordered.push_back(std::move(triangles));
+    std::stable_sort(ordered.begin(), ordered.end(),
+                     [](const auto& x, const auto& y) { return x.size() > y.size(); });
+    for (std::size_t k = 0; k < ordered.size(); ++k) {
+      result.push_back(sub_strip(strip, ordered[k]));
+      if (k > 0) result.back().id = next_id++;
+    }
     if (dropped) *dropped += count;
   }
   return result;

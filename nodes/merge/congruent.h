@@ -60,10 +60,11 @@ std::vector<FlatStrip> merge_congruent(std::vector<FlatStrip> strips,
 /// approximation of each fills the space between the points of their shared cut where the cut
 /// zigzags (a flat region where the harmonic field hardly varies, on CAD models), so both pieces
 /// would print the same triangles and their seams could not be told apart. The union of the
-/// strips, so the certified distance, is unchanged. A strip left empty goes; one that would fall
-/// apart or meet itself at a point keeps its triangles (and so the double cover). The rest of
-/// each strip keeps its layout; its boundary is recomputed. `dropped` (when given) gets the
-/// number of triangles taken out.
+/// strips, so the certified distance, is unchanged. A strip left empty goes; one that falls
+/// apart is split into its pieces (joined across edges), the largest keeping its id and the
+/// others taking new ids after every strip's; one that would meet itself at a point keeps its
+/// triangles (and so the double cover). The rest of each strip keeps its layout; its boundary
+/// is recomputed. `dropped` (when given) gets the number of triangles taken out.
 /// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
 std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> strips,
                                                      std::size_t* dropped = nullptr);
