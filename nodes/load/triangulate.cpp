@@ -64,16 +64,18 @@ bool ear_clip(const Vec3d* const* points, std::size_t size, const Vec3d& normal,
   return true;
 }
 
+// The cosine of the angle between normals m and n; a triangle of no area agrees with nothing.
+double agreement(const Vec3d& m, const Vec3d& n) {
+  const double lengths = std::sqrt(OpenMesh::dot(m, m) * OpenMesh::dot(n, n));
+  return lengths > 0.0 ? OpenMesh::dot(m, n) / lengths : -2.0;
+}
+
 // The two triangles of quad 0-1-2-3 over the diagonal 0-2 or 1-3, whichever gives triangles
 // whose normals agree most (the cosine of the angle between them; a triangle of no area
 // agrees with nothing), 0-2 on a tie.
 std::vector<std::array<std::size_t, 3>> least_folded_split(const Vec3d* const* points) {
   auto normal = [&](std::size_t a, std::size_t b, std::size_t c) {
     return cross(*points[b] - *points[a], *points[c] - *points[a]);
-  };
-  auto agreement = [&](const Vec3d& m, const Vec3d& n) {
-    const double lengths = std::sqrt(OpenMesh::dot(m, m) * OpenMesh::dot(n, n));
-    return lengths > 0.0 ? OpenMesh::dot(m, n) / lengths : -2.0;
   };
   const double over_02 = agreement(normal(0, 1, 2), normal(0, 2, 3));
   const double over_13 = agreement(normal(0, 1, 3), normal(1, 2, 3));
@@ -84,8 +86,8 @@ std::vector<std::array<std::size_t, 3>> least_folded_split(const Vec3d* const* p
 // Of every triangulation of the polygon 0..size-1 (size at most kMostFolded: 132 of them for 8
 // corners), the one whose worst fold is least: the least, over its diagonals, of the cosine of
 // the angle between the normals of the two triangles on either side (a triangle of no area
-// agrees with nothing), the first found on a tie. For a quad it is least_folded_split's choice
-// (which keeps the order of its triangles as it always had).
+// agrees with nothing), the first found on a tie. Quads go to least_folded_split, which keeps
+// the diagonal and the order of its triangles a twisted quad has always had.
 constexpr std::size_t kMostFolded = 8;
 
 std::vector<std::array<std::size_t, 3>> least_folded_triangulation(const Vec3d* const* points,
@@ -93,10 +95,6 @@ std::vector<std::array<std::size_t, 3>> least_folded_triangulation(const Vec3d* 
   using Triangles = std::vector<std::array<std::size_t, 3>>;
   auto normal = [&](const std::array<std::size_t, 3>& t) {
     return cross(*points[t[1]] - *points[t[0]], *points[t[2]] - *points[t[0]]);
-  };
-  auto agreement = [&](const Vec3d& m, const Vec3d& n) {
-    const double lengths = std::sqrt(OpenMesh::dot(m, m) * OpenMesh::dot(n, n));
-    return lengths > 0.0 ? OpenMesh::dot(m, n) / lengths : -2.0;
   };
   // Every triangulation of the corners first..last (in order): the triangle on the edge
   // first-last and the corner k between, then those of the two sides.

@@ -494,6 +494,18 @@ bool absorb_by_triangles(std::vector<FlatStrip>& strips, int small, const MergeO
   return true;
 }
 
+// Triangle `t` of `strip` by its 3D corners, sorted: the same key wherever a triangle on those
+// points is printed.
+std::array<double, 9> corners_key(const FlatStrip& strip, const Triangle& t) {
+  std::array<std::array<double, 3>, 3> c;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& p = strip.vertices3d[t[k]];
+    c[k] = {p.x(), p.y(), p.z()};
+  }
+  std::sort(c.begin(), c.end());
+  return {c[0][0], c[0][1], c[0][2], c[1][0], c[1][1], c[1][2], c[2][0], c[2][1], c[2][2]};
+}
+
 // Whether the triangles around `vertex` form one fan (each joined to the next across an
 // edge), not two fans meeting at a point.
 bool one_fan(const std::vector<Triangle>& triangles, int vertex) {
@@ -591,16 +603,6 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
     return it == donors.end() ? strips[s] : it->second;
   };
   std::set<std::array<double, 9>> refused;  // triangles (their 3D corners) that found no place
-  auto corners_key = [](const FlatStrip& strip, const Triangle& t) {
-    std::array<std::array<double, 3>, 3> c;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& p = strip.vertices3d[t[k]];
-      c[k] = {p.x(), p.y(), p.z()};
-    }
-    std::sort(c.begin(), c.end());
-    return std::array<double, 9>{c[0][0], c[0][1], c[0][2], c[1][0], c[1][1],
-                                 c[1][2], c[2][0], c[2][1], c[2][2]};
-  };
   struct Candidate {
     int strip;
     std::size_t triangle;
@@ -1099,18 +1101,8 @@ std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> stri
   for (std::size_t s = 0; s < strips.size(); ++s) {
     const FlatStrip& strip = strips[s];
     twice[s].assign(strip.triangles.size(), 0);
-    for (std::size_t t = 0; t < strip.triangles.size(); ++t) {
-      std::array<std::array<double, 3>, 3> c;
-      for (int k = 0; k < 3; ++k) {
-        const Vec3& p = strip.vertices3d[strip.triangles[t][k]];
-        c[k] = {p.x(), p.y(), p.z()};
-      }
-      std::sort(c.begin(), c.end());
-      if (!seen.insert({c[0][0], c[0][1], c[0][2], c[1][0], c[1][1], c[1][2], c[2][0], c[2][1],
-                        c[2][2]})
-               .second)
-        twice[s][t] = any = 1;
-    }
+    for (std::size_t t = 0; t < strip.triangles.size(); ++t)
+      if (!seen.insert(corners_key(strip, strip.triangles[t])).second) twice[s][t] = any = 1;
   }
   if (!any) return strips;
   int next_id = 0;

@@ -102,6 +102,16 @@ std::string stl_facet(std::initializer_list<int> corners) {
   return text + "    endloop\n  endfacet\n";
 }
 
+// The OBJ vertex lines of `points`, one "v x y z" each.
+template <std::size_t N>
+std::string obj_vertices(const double (&points)[N][3]) {
+  std::string obj;
+  for (const auto& q : points)
+    obj += "v " + std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) +
+           "\n";
+  return obj;
+}
+
 int input_vertex_of(const Mesh& mesh, Mesh::VertexHandle v) {
   OpenMesh::VPropHandleT<int> handle;
   if (!mesh.get_property_handle(handle, "v:input_vertex")) {
@@ -926,10 +936,7 @@ TEST_F(LoadOpenMeshTest, NonConvexPolygonIsEarClipped) {
 TEST_F(LoadOpenMeshTest, APolygonOutOfItsPlaneIsTriangulatedFoldingLeast) {
   const double p[5][3] = {
       {-500, 0, 500}, {500, 0, 500}, {500, 0, -500}, {-500, 0, -500}, {0, 500, -500}};
-  std::string obj;
-  for (const auto& q : p)
-    obj += "v " + std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) +
-           "\n";
+  const std::string obj = obj_vertices(p);
   const LoadedMesh loaded = load_mesh(write("raised.obj", obj + "f 1 2 3 4 5\n"));
   ASSERT_EQ(loaded.mesh.n_faces(), 3u);
   EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(),
@@ -968,10 +975,7 @@ TEST_F(LoadOpenMeshTest, ATwistedQuadIsSplitAlongTheDiagonalThatFoldsLeast) {
                           {12.819249, 236.278671, 43.792137},
                           {12.944972, 236.356552, 42.972511},
                           {12.883921, 236.197540, 42.910332}};
-  std::string obj;
-  for (const auto& q : p)
-    obj += "v " + std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) +
-           "\n";
+  const std::string obj = obj_vertices(p);
   const LoadedMesh loaded = load_mesh(write("twisted.obj", obj + "f 1 2 3 4\n"));
   ASSERT_EQ(loaded.mesh.n_faces(), 2u);
   EXPECT_NE(std::find(loaded.repairs.begin(), loaded.repairs.end(),
