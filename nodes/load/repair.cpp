@@ -14,8 +14,11 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "core/edge_map.h"
@@ -554,6 +557,166 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> sheets_around_edge(
   return sheets;
 }
 
+// The angle between the two faces joined across edge use `slot` (0: folded flat onto each
+// other, pi: flat), whichever way either faces.
+double opening_angle(const Soup& soup, const std::vector<int>& neighbor, std::uint32_t slot) {
+  const Triangle3& t = soup.triangles[slot / 3];
+  const Triangle3& u = soup.triangles[static_cast<std::size_t>(neighbor[slot])];
+  const int from = t[slot % 3], to = t[(slot % 3 + 1) % 3];
+  const int p = t[(slot % 3 + 2) % 3];
+  const int q = u[0] != from && u[0] != to ? u[0] : (u[1] != from && u[1] != to ? u[1] : u[2]);
+  const Vec3d axis = soup.positions[to] - soup.positions[from];
+  const double length2 = OpenMesh::dot(axis, axis);
+  if (!(length2 > 0.0)) return M_PI;
+  const auto across = [&](int c) {
+    const Vec3d w = soup.positions[c] - soup.positions[from];
+    return w - axis * (OpenMesh::dot(w, axis) / length2);
+  };
+  const Vec3d x = across(p), y = across(q);
+  return std::atan2(OpenMesh::norm(cross(x, y)), OpenMesh::dot(x, y));
+}
+
+// Where the sheets of a non-manifold edge (key a < b, its uses `slots`, each pair of a sheet
+// joined in `neighbor`, a face left over not) still meet around one of its ends, the manifold
+// edges at that end to leave unjoined so that every sheet there lies in a fan of its own. The
+// faces around a vertex, joined across its edges, form paths and cycles (each face has two
+// edges at the vertex, each edge joins two faces); the sheets are places on them, a joined pair
+// across a-b or a face left over (the end of a path). Between each two places next to each
+// other on one path or cycle the edge whose faces meet at the sharpest angle is left unjoined:
+// the surface gets a slit there, along a crease where one shows least. Of the two ends, the one
+// that needs fewer such edges; none when the sheets already part at one end. False when between
+// two places at both ends there is no manifold edge (`non_manifold` lists the other
+// non-manifold edges).
+bool parting_edges(const Soup& soup, const std::vector<int>& neighbor, UnionFind& fans,
+                   std::uint64_t key, const std::vector<std::uint32_t>& slots,
+                   const std::unordered_set<std::uint64_t>& non_manifold,
+                   std::vector<std::uint64_t>& parting) {
+  const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+  const auto edge_key = [&](std::uint32_t slot) {
+    const Triangle3& t = soup.triangles[slot / 3];
+    const auto x = static_cast<std::uint64_t>(t[slot % 3]);
+    const auto y = static_cast<std::uint64_t>(t[(slot % 3 + 1) % 3]);
+    return std::min(x, y) << 32 | std::max(x, y);
+  };
+  // The places (one slot each: a pair by its lower slot) and, per end, each one's fan.
+  std::vector<std::uint32_t> places;
+  for (std::uint32_t slot : slots) {
+    const int other = neighbor[slot];
+    if (other < 0) {
+      places.push_back(slot);
+    } else {
+      // the partner's slot on this edge
+      const auto partner = std::find_if(slots.begin(), slots.end(), [&](std::uint32_t s) {
+        return s / 3 == static_cast<std::uint32_t>(other);
+      });
+      if (partner != slots.end() && slot < *partner) places.push_back(slot);
+    }
+  }
+  const auto fan_at = [&](std::uint32_t slot, int v) {
+    const std::uint32_t t = slot / 3;
+    return fans.find(3 * t + static_cast<std::uint32_t>(corner_of(soup.triangles[t], v)));
+  };
+  bool parted = true;  // every two places are in different fans at a or at b
+  for (std::size_t i = 0; i < places.size() && parted; ++i)
+    for (std::size_t j = i + 1; j < places.size() && parted; ++j)
+      parted = fan_at(places[i], a) != fan_at(places[j], a) ||
+               fan_at(places[i], b) != fan_at(places[j], b);
+  if (parted) return true;
+
+  // The edges to leave unjoined at end v, or nothing when some two places have none between.
+  const auto cuts_at = [&](int v) -> std::optional<std::vector<std::uint64_t>> {
+    // The two edge uses of face t at v: from v, and into v.
+    const auto at_v = [&](std::uint32_t t) {
+      const int k = corner_of(soup.triangles[t], v);
+      return std::array<std::uint32_t, 2>{3 * t + static_cast<std::uint32_t>(k),
+                                          3 * t + static_cast<std::uint32_t>((k + 2) % 3)};
+    };
+    const auto far_end = [&](std::uint32_t slot) {  // the edge's corner other than v
+      const Triangle3& t = soup.triangles[slot / 3];
+      return t[slot % 3] == v ? t[(slot % 3 + 1) % 3] : t[slot % 3];
+    };
+    // From face t, leaving by `out`: the next face and the slot it leaves by, or nothing.
+    const auto step = [&](std::uint32_t out) -> std::optional<std::uint32_t> {
+      const int u = neighbor[out];
+      if (u < 0) return std::nullopt;
+      const auto ends = at_v(static_cast<std::uint32_t>(u));
+      return far_end(ends[0]) == far_end(out) ? ends[1] : ends[0];
+    };
+    std::vector<std::uint64_t> cuts;
+    std::set<std::size_t> done;  // fans walked
+    const std::size_t limit = 3 * soup.triangles.size();
+    for (std::uint32_t place : places) {
+      const std::size_t fan = fan_at(place, v);
+      if (!done.insert(fan).second) continue;
+      // Walk back from the place's face to an end of the path, or around the cycle.
+      const std::uint32_t t0 = place / 3;
+      std::uint32_t out = at_v(t0)[1];
+      bool cycle = false;
+      for (std::size_t n = 0;; ++n) {
+        if (n > limit) return std::nullopt;
+        const auto next = step(out);
+        if (!next) break;
+        if (*next / 3 == t0) {
+          cycle = true;
+          break;
+        }
+        out = *next;
+      }
+      // The walk forward: the leaving slot of each face, starting from the path's end (whose
+      // other slot is open) or from t0.
+      std::uint32_t leave =
+          cycle ? at_v(t0)[0] : (at_v(out / 3)[0] == out ? at_v(out / 3)[1] : at_v(out / 3)[0]);
+      std::vector<std::uint32_t> links;  // joined edges in order
+      std::vector<int> mark;             // per link: 1 a place, 0 a candidate, -1 neither
+      std::vector<std::size_t> at;       // positions of places: 2 i for face i, 2 i + 1 for link i
+      for (std::size_t n = 0;; ++n) {
+        if (n > limit) return std::nullopt;
+        const std::uint32_t t = leave / 3;
+        const auto ends = at_v(t);
+        const std::uint32_t enter = ends[0] == leave ? ends[1] : ends[0];
+        if (neighbor[enter] < 0 && edge_key(enter) == key)
+          at.push_back(2 * links.size());  // a face left over: the path's first face
+        if (neighbor[leave] < 0) {
+          if (edge_key(leave) == key) at.push_back(2 * links.size());  // left over, last face
+          break;
+        }
+        const std::uint64_t k = edge_key(leave);
+        mark.push_back(k == key ? 1 : (non_manifold.count(k) ? -1 : 0));
+        if (k == key) at.push_back(2 * links.size() + 1);
+        links.push_back(leave);
+        const auto next = step(leave);
+        if (cycle && *next / 3 == t0) break;
+        leave = *next;
+      }
+      if (at.size() < 2) continue;
+      // One cut between each two places next to each other (around a cycle also the last and
+      // the first).
+      const std::size_t gaps = cycle ? at.size() : at.size() - 1;
+      for (std::size_t g = 0; g < gaps; ++g) {
+        const std::size_t from = at[g],
+                          to = g + 1 < at.size() ? at[g + 1] : at[0] + 2 * links.size();
+        std::optional<std::size_t> best;
+        double sharpest = std::numeric_limits<double>::infinity();
+        for (std::size_t pos = from + 1; pos < to; ++pos) {
+          if (pos % 2 == 0) continue;
+          const std::size_t link = (pos / 2) % links.size();
+          if (mark[link] != 0) continue;
+          const double angle = opening_angle(soup, neighbor, links[link]);
+          if (angle < sharpest) sharpest = angle, best = link;
+        }
+        if (!best) return std::nullopt;
+        cuts.push_back(edge_key(links[*best]));
+      }
+    }
+    return cuts;
+  };
+  std::optional<std::vector<std::uint64_t>> at_a = cuts_at(a), at_b = cuts_at(b);
+  if (!at_a && !at_b) return false;
+  const auto& cuts = !at_b || (at_a && at_a->size() <= at_b->size()) ? *at_a : *at_b;
+  parting.insert(parting.end(), cuts.begin(), cuts.end());
+  return true;
+}
+
 }  // namespace
 
 // Moves each copy of a vertex (at `first_copy` and after, copy c made from vertex copied_from[c])
@@ -631,8 +794,8 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
   auto face_of_slot = [&](std::uint32_t slot) {
     return std::to_string(soup.source_face[slot / 3]);
   };
-  std::vector<int> neighbor(3 * triangles, -1);
-  UnionFind fans(3 * triangles);
+  std::vector<int> neighbor;
+  UnionFind fans(0);
   std::uint64_t non_manifold = 0, inconsistent = 0, cut_apart = 0;
   std::size_t first_non_manifold = 0, first_inconsistent = 0;
   // The two faces of edge uses s1 and s2 (at uses[i]) as neighbours across it.
@@ -649,26 +812,47 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
     fans.unite(s1 - s1 % 3 + corner_of(a, from), s2 - s2 % 3 + corner_of(b, from));
     fans.unite(s1 - s1 % 3 + corner_of(a, to), s2 - s2 % 3 + corner_of(b, to));
   };
-  std::vector<char> on_cut_edge(repair ? soup.positions.size() : 0, 0);
+  std::vector<char> on_cut_edge;
   std::vector<std::size_t> cut_edges;  // where each edge cut apart starts in `uses`
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i + 1;
-    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
-    if (j - i >= 3) {
-      std::vector<std::pair<std::uint32_t, std::uint32_t>> sheets;
-      if (repair) sheets = sheets_around_edge(soup, uses[i].key, slots_of(uses, i, j));
-      if (sheets.empty()) {
-        if (non_manifold++ == 0) first_non_manifold = i;
-      } else {
-        for (const auto& [s1, s2] : sheets) join(s1, s2, i);
-        on_cut_edge[uses[i].key >> 32] = on_cut_edge[uses[i].key & 0xffffffffu] = 1;
-        cut_edges.push_back(i);
-        ++cut_apart;
+  // Manifold edges left unjoined so that the sheets of a cut edge part at one of its ends.
+  std::vector<std::uint64_t> parting;
+  for (int pass = 0; pass < 2; ++pass) {
+    neighbor.assign(3 * triangles, -1);
+    fans = UnionFind(3 * triangles);
+    non_manifold = inconsistent = cut_apart = 0;
+    on_cut_edge.assign(repair ? soup.positions.size() : 0, 0);
+    cut_edges.clear();
+    for (std::uint64_t key : parting) on_cut_edge[key >> 32] = on_cut_edge[key & 0xffffffffu] = 1;
+    for (std::size_t i = 0; i < uses.size();) {
+      std::size_t j = i + 1;
+      while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+      if (j - i >= 3) {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> sheets;
+        if (repair) sheets = sheets_around_edge(soup, uses[i].key, slots_of(uses, i, j));
+        if (sheets.empty()) {
+          if (non_manifold++ == 0) first_non_manifold = i;
+        } else {
+          for (const auto& [s1, s2] : sheets) join(s1, s2, i);
+          on_cut_edge[uses[i].key >> 32] = on_cut_edge[uses[i].key & 0xffffffffu] = 1;
+          cut_edges.push_back(i);
+          ++cut_apart;
+        }
+      } else if (j - i == 2 && !std::binary_search(parting.begin(), parting.end(), uses[i].key)) {
+        join(uses[i].slot, uses[i + 1].slot, i);
       }
-    } else if (j - i == 2) {
-      join(uses[i].slot, uses[i + 1].slot, i);
+      i = j;
     }
-    i = j;
+    if (pass == 1 || non_manifold > 0 || cut_edges.empty()) break;
+    std::unordered_set<std::uint64_t> cut_keys;
+    for (std::size_t i : cut_edges) cut_keys.insert(uses[i].key);
+    for (std::size_t i : cut_edges) {
+      std::size_t j = i + 1;
+      while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+      parting_edges(soup, neighbor, fans, uses[i].key, slots_of(uses, i, j), cut_keys, parting);
+    }
+    std::sort(parting.begin(), parting.end());
+    parting.erase(std::unique(parting.begin(), parting.end()), parting.end());
+    if (parting.empty()) break;
   }
   if (non_manifold > 0) {
     std::string faces;
@@ -725,6 +909,12 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
               "the copies of its ends moved into their own sheet by at most "
            << moved << ", so the sheets do not share a point)";
       repairs.push_back(what.str());
+    }
+    if (!parting.empty()) {
+      repairs.push_back(
+          "opened " + counted(parting.size(), "edge", "edges") +
+          " next to non-manifold edges whose sheets met again around both ends (at one end, "
+          "between each two sheets, the edge of the sharpest crease), so those sheets part there");
     }
     repairs.push_back(
         "split " + counted(non_manifold_vertices, "non-manifold vertex", "non-manifold vertices") +

@@ -62,9 +62,11 @@ void check_duplicate_triangles(const Soup& soup, const std::string& file);
 /// edge stay two closed solids; else the flattest pairs, a face left over getting the edge as a
 /// boundary; the sheets' copies of the edge's ends moved into their own sheet by at most 1e-7
 /// of the bounding-box diagonal, so that no later step, which identifies seams by their 3D
-/// points, takes one sheet's edge for the other's; an edge whose sheets still meet at both ends
-/// stays an error), splits non-manifold vertices, makes the orientation consistent and closed
-/// components face outwards, adding one line per change to `repairs`.
+/// points, takes one sheet's edge for the other's; where the sheets still meet around both
+/// ends, at one end the sharpest manifold edge between each two sheets is opened too, so they
+/// part; an edge where that finds none stays an error), splits non-manifold vertices, makes the
+/// orientation consistent and closed components face outwards, adding one line per change to
+/// `repairs`.
 void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
                                std::vector<std::string>& repairs);
 

@@ -647,6 +647,41 @@ TEST_F(LoadOpenMeshTest, EdgeSharedByThreeFaces) {
   EXPECT_EQ(joined, 1u);
 }
 
+// A closed tetrahedron (0 1 3 4) set on the edge 0-1 of a face of a surface (1 0 2), as in a
+// pocket a modeller left on a surface: three faces on edge 0-1, and pairing them does not part
+// them, since around both 0 and 1 the tetrahedron's faces join the pair to the face left over.
+// The repair opens one edge of the tetrahedron at one end of 0-1 (the sharper crease), so the
+// face left over gets its own copy of that end. Without the repair it is an error.
+TEST_F(LoadOpenMeshTest, SheetsThatMeetAgainAroundAnEdgeArePartedByOpeningAnEdge) {
+  const fs::path path = write("pocket.off",
+                              "OFF\n5 5 0\n0 0 0\n1 0 0\n0.5 -1 0\n0.5 0.5 0.5\n0.5 1 0\n"
+                              "3 1 0 2\n3 0 4 1\n3 0 1 3\n3 1 4 3\n3 4 0 3\n");
+  LoadOptions strict;
+  strict.repair = false;
+  expect_error<InvalidInputException>(path, {"1 non-manifold edge", "vertices 0-1"}, strict);
+  const LoadedMesh loaded = load_mesh(path);
+  EXPECT_EQ(loaded.mesh.n_faces(), 5u);
+  EXPECT_EQ(loaded.mesh.n_vertices(), 6u);  // one end of 0-1 copied
+  // The surface is unchanged (the copy moved by 1e-7 of the diagonal at most).
+  const std::vector<OpenMesh::Vec3d> p = {
+      {0, 0, 0}, {1, 0, 0}, {0.5, -1, 0}, {0.5, 0.5, 0.5}, {0.5, 1, 0}};
+  double area = 0.0;
+  for (auto [i, j, k] :
+       std::vector<std::array<int, 3>>{{1, 0, 2}, {0, 4, 1}, {0, 1, 3}, {1, 4, 3}, {4, 0, 3}})
+    area += 0.5 * OpenMesh::cross(p[j] - p[i], p[k] - p[i]).norm();
+  EXPECT_NEAR(surface_area(loaded.mesh), area, 1e-6);
+  int boundary = 0;
+  for (auto e : loaded.mesh.edges()) boundary += loaded.mesh.is_boundary(e);
+  // The surface face's two outer edges, the tetrahedron's 0-1 (its face there left over), and
+  // the opened edge's two sides.
+  EXPECT_EQ(boundary, 5);
+  EXPECT_EQ(connected_components(loaded.mesh), 1);
+  const auto& repairs = loaded.repairs;
+  EXPECT_TRUE(std::any_of(repairs.begin(), repairs.end(), [](const std::string& r) {
+    return r.find("opened 1 edge next to non-manifold edges") != std::string::npos;
+  })) << testing::PrintToString(repairs);
+}
+
 // Two closed tetrahedra touching along edge 0-1, each on its own side (the second is the
 // first turned half a turn about that edge): four faces on the edge, two of each solid. The
 // repair pairs them by solid, so each stays closed, and moves the second's copies of 0 and 1
