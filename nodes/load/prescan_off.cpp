@@ -49,7 +49,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     while (!line.empty() && is_space(line.back())) line.remove_suffix(1);
   }
   std::string_view rest = line;
-  const std::string_view keyword = next_token(rest);
+  std::string_view keyword = next_token(rest);
   // OpenMesh checks the first line for [ST][C][N][4][n]OFF[ BINARY].
   std::size_t prefix = 0;
   const bool texcoords = keyword.substr(0, 2) == "ST";
@@ -62,7 +62,20 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     throw_invalid(file,
                   first_line + "only 3-dimensional OFF is supported, got " + in_quotes(keyword));
   }
-  if (line.empty() || is_space(line.front()) || keyword.substr(prefix) != "OFF") {
+  // A plain OFF is read here, not by OpenMesh's reader, so its header may be looser: blanks
+  // before the keyword, and the counts on the keyword's line, even glued to it ("OFF8 6 12").
+  const bool native = raw != nullptr && prefix == 0;
+  std::string_view counts_on_keyword_line;
+  if (native && keyword.size() > 3 && keyword.substr(0, 3) == "OFF" &&
+      std::all_of(keyword.begin() + 3, keyword.end(),
+                  [](char c) { return c >= '0' && c <= '9'; })) {
+    counts_on_keyword_line =
+        trim(line.substr(static_cast<std::size_t>(keyword.data() + 3 - line.data())));
+    keyword = keyword.substr(0, 3);
+    rest = {};
+  }
+  const bool leading_blank = !line.empty() && is_space(line.front());
+  if (line.empty() || (leading_blank && !native) || keyword.substr(prefix) != "OFF") {
     throw_invalid(file, first_line +
                             "expected 'OFF' (optionally prefixed by ST, C, N) at the start of "
                             "the first line, got " +
@@ -70,11 +83,15 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
   }
   const std::string_view after = next_token(rest);
   const bool binary = after == "BINARY";
-  if (binary && (line.substr(keyword.size(), 7) != " BINARY" || !trim(rest).empty())) {
+  if (binary &&
+      (leading_blank || line.substr(keyword.size(), 7) != " BINARY" || !trim(rest).empty())) {
     throw_invalid(file, first_line + "write the binary OFF header exactly as '" +
                             std::string(keyword) + " BINARY'");
   }
-  if (!after.empty() && !binary) {
+  if (!after.empty() && !binary && native) {
+    counts_on_keyword_line =
+        trim(line.substr(static_cast<std::size_t>(after.data() - line.data())));
+  } else if (!after.empty() && !binary) {
     throw_invalid(file, first_line + "unexpected " + in_quotes(after) +
                             " after 'OFF' (OpenMesh's reader expects the counts on the next line)");
   }
@@ -117,7 +134,9 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     return scan;
   }
 
-  if (!next_off_line(in, line, scan.off_comments)) {
+  if (!counts_on_keyword_line.empty()) {
+    line = counts_on_keyword_line;
+  } else if (!next_off_line(in, line, scan.off_comments)) {
     throw_invalid(file, "truncated: expected the counts line (vertices faces edges) after 'OFF'");
   }
   std::int64_t counts[3] = {0, 0, 0};
@@ -146,7 +165,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
              in.remaining());
   check_counts(file, vertices, faces, options);
   // A plain OFF is read here; with prefixes OpenMesh's reader reads the extra values.
-  if (raw != nullptr && prefix != 0) raw = nullptr;
+  if (!native) raw = nullptr;
   if (raw != nullptr) {
     *raw = RawMesh();
     raw->positions.reserve(vertices);

@@ -278,6 +278,26 @@ TEST_F(LoadOpenMeshTest, OffAscii) {
   EXPECT_FALSE(loaded.has_uvs);
 }
 
+// A plain OFF is read by the pre-scan, so its header may be looser than OpenMesh's reader
+// allows: blanks before the keyword, the counts on the keyword's line, even glued to it (trimesh's
+// whitespace.off starts "\t   OFF8 6 12 # or nah"). With a prefix (OpenMesh reads those) or
+// BINARY the header stays strict.
+TEST_F(LoadOpenMeshTest, OffHeaderWithBlanksAndCountsOnItsLine) {
+  const std::string off = tetra_off();
+  const std::string body = off.substr(off.find("0\n") + 2);  // after "OFF\n4 4 0\n"
+  for (const char* header : {"  OFF 4 4 0\n", "\t OFF4 4 0 # a comment\n", "OFF\t4 4 0\n"}) {
+    SCOPED_TRACE(header);
+    const LoadedMesh loaded = load_mesh(write("loose.off", std::string(header).append(body)));
+    expect_closed_tetrahedron(loaded);
+  }
+  expect_error<InvalidInputException>(
+      write("loose_c.off", std::string(" COFF\n4 4 0\n").append(body)), {"expected 'OFF'"});
+  expect_error<InvalidInputException>(
+      write("loose_counts.off", std::string("OFF 4 4\n").append(body)), {"expected 3 counts"});
+  expect_error<InvalidInputException>(write("loose_binary.off", " OFF BINARY\n"),
+                                      {"exactly as 'OFF BINARY'"});
+}
+
 TEST_F(LoadOpenMeshTest, OffBinary) {
   std::string data = "OFF BINARY\n";
   put_u32(data, 4);
