@@ -67,7 +67,8 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
 /// file size, the records of every element up to the faces.
 /// Given `raw`, a binary PLY whose vertices have only positions (and normals) and whose faces
 /// only their index lists is also read into it, positions in double precision, and
-/// `read_natively` is set.
+/// `read_natively` is set; so is one, ascii or binary, whose faces have a texture coordinate list
+/// (`texcoord`, as MeshLab writes it), which OpenMesh's reader cannot read.
 Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options,
                     RawMesh* raw = nullptr);
 /// STL, binary when the size is 84 + 50 * triangles, else ascii: every triangle's corners; those

@@ -1,11 +1,13 @@
 // The pre-scan of a PLY file, ascii or binary of either endianness.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -91,6 +93,147 @@ bool plain_binary_ply(const std::vector<PlyElement>& elements, std::size_t read_
   return elements[1].properties.size() == 1 && elements[1].properties[0].is_vertex_indices;
 }
 
+// The vertex and face records of a PLY that the pre-scan reads itself, value by value: a
+// MeshLab-style PLY, its texture coordinates a list per face ("property list uchar float
+// texcoord", u v per corner), which OpenMesh's reader cannot read. Positions, per-vertex texture
+// coordinates (u v, s t, texture_u texture_v, texture_s texture_t) and colours (red green blue,
+// integers over 255 or reals in 0..1), the faces' vertex index lists, texture coordinate lists
+// and colours are kept; any other value is read past.
+class PlyRecords {
+ public:
+  PlyRecords(RawMesh& raw, const PlyElement& vertex, const PlyElement& face)
+      : raw_(raw), vertex_roles_(roles(vertex, false)), face_roles_(roles(face, true)) {
+    raw_ = RawMesh();
+    raw_.positions.reserve(vertex.count);
+    raw_.face_start.reserve(face.count + 1);
+    raw_.corners.reserve(3 * face.count);
+    vertex_uv_ = has(vertex_roles_, Role::u) && has(vertex_roles_, Role::v);
+    vertex_colour_ = has(vertex_roles_, Role::red) && has(vertex_roles_, Role::green) &&
+                     has(vertex_roles_, Role::blue);
+    face_uv_ = has(face_roles_, Role::texcoord);
+    face_colour_ = has(face_roles_, Role::red) && has(face_roles_, Role::green) &&
+                   has(face_roles_, Role::blue);
+  }
+
+  /// A value of property `property` of the current vertex record.
+  void vertex_value(std::size_t property, double value) {
+    const Role role = vertex_roles_[property];
+    const std::size_t slot = static_cast<std::size_t>(role);
+    if (role == Role::x || role == Role::y || role == Role::z) {
+      position_[slot - static_cast<std::size_t>(Role::x)] = value;
+    } else if (role == Role::u) {
+      uv_[0] = value;
+    } else if (role == Role::v) {
+      uv_[1] = value;
+    } else if (role == Role::red || role == Role::green || role == Role::blue) {
+      colour_[slot - static_cast<std::size_t>(Role::red)] = value * scale_[property];
+    }
+  }
+  /// The current vertex record is complete.
+  void end_vertex() {
+    raw_.positions.emplace_back(position_[0], position_[1], position_[2]);
+    if (vertex_uv_) {
+      raw_.vertex_uv.emplace_back(uv_[0], uv_[1]);
+      raw_.vertex_has_uv.push_back(std::isfinite(uv_[0]) && std::isfinite(uv_[1]) ? 1 : 0);
+    }
+    if (vertex_colour_) {
+      raw_.vertex_colour.push_back(clamped());
+      raw_.vertex_has_colour.push_back(1);
+    }
+  }
+  /// A value of property `property` of the current face record (an index list's entries as
+  /// `index`, any other value as `value`).
+  void face_value(std::size_t property, std::int64_t index, double value) {
+    const Role role = face_roles_[property];
+    if (role == Role::indices) {
+      raw_.corners.push_back(static_cast<int>(std::clamp<std::int64_t>(
+          index, std::numeric_limits<int>::min(), std::numeric_limits<int>::max())));
+    } else if (role == Role::texcoord) {
+      texcoords_.push_back(value);
+    } else if (role == Role::red || role == Role::green || role == Role::blue) {
+      colour_[static_cast<std::size_t>(role) - static_cast<std::size_t>(Role::red)] =
+          value * scale_face_[property];
+    }
+  }
+  /// The current face record is complete.
+  void end_face() {
+    const std::size_t begin = raw_.face_start.back();
+    const std::size_t corners = raw_.corners.size() - begin;
+    raw_.face_start.push_back(raw_.corners.size());
+    if (face_uv_) {
+      // A list of another length than two per corner, or not finite, gives the face no texture
+      // coordinates.
+      const bool whole = texcoords_.size() == 2 * corners &&
+                         std::all_of(texcoords_.begin(), texcoords_.end(),
+                                     [](double x) { return std::isfinite(x); });
+      raw_.corner_uv.resize(raw_.corners.size());
+      for (std::size_t k = 0; whole && k < corners; ++k)
+        raw_.corner_uv[begin + k] = Vec2d(texcoords_[2 * k], texcoords_[2 * k + 1]);
+      raw_.face_has_uv.push_back(whole ? 1 : 0);
+      texcoords_.clear();
+    }
+    if (face_colour_) {
+      raw_.face_colour.push_back(clamped());
+      raw_.face_has_colour.push_back(1);
+    }
+  }
+
+ private:
+  enum class Role { none, x, y, z, u, v, red, green, blue, indices, texcoord };
+
+  std::vector<Role> roles(const PlyElement& element, bool face) {
+    std::vector<Role> out;
+    std::vector<double>& scale = face ? scale_face_ : scale_;
+    for (const PlyProperty& p : element.properties) {
+      Role role = Role::none;
+      if (face) {
+        if (p.is_vertex_indices)
+          role = Role::indices;
+        else if (p.is_list && p.name == "texcoord")
+          role = Role::texcoord;
+      } else if (!p.is_list) {
+        if (p.name == "x")
+          role = Role::x;
+        else if (p.name == "y")
+          role = Role::y;
+        else if (p.name == "z")
+          role = Role::z;
+        else if (is_one_of(p.name, {"u", "s", "texture_u", "texture_s"}))
+          role = Role::u;
+        else if (is_one_of(p.name, {"v", "t", "texture_v", "texture_t"}))
+          role = Role::v;
+      }
+      if (!p.is_list && role == Role::none) {
+        if (is_one_of(p.name, {"red", "diffuse_red"}))
+          role = Role::red;
+        else if (is_one_of(p.name, {"green", "diffuse_green"}))
+          role = Role::green;
+        else if (is_one_of(p.name, {"blue", "diffuse_blue"}))
+          role = Role::blue;
+      }
+      out.push_back(role);
+      scale.push_back(p.type != nullptr && !p.type->is_float ? 1.0 / 255.0 : 1.0);
+    }
+    return out;
+  }
+  static bool has(const std::vector<Role>& roles, Role role) {
+    return std::find(roles.begin(), roles.end(), role) != roles.end();
+  }
+  Vec3d clamped() const {
+    return Vec3d(std::clamp(colour_[0], 0.0, 1.0), std::clamp(colour_[1], 0.0, 1.0),
+                 std::clamp(colour_[2], 0.0, 1.0));
+  }
+
+  RawMesh& raw_;
+  std::vector<double> scale_, scale_face_;
+  std::vector<Role> vertex_roles_, face_roles_;
+  bool vertex_uv_ = false, vertex_colour_ = false, face_uv_ = false, face_colour_ = false;
+  double position_[3] = {0, 0, 0};
+  double uv_[2] = {0, 0};
+  double colour_[3] = {0, 0, 0};
+  std::vector<double> texcoords_;
+};
+
 }  // namespace
 
 Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions& options,
@@ -101,6 +244,7 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
   std::string header_bytes;
   std::size_t openmesh_position = 0;  // where OpenMesh's `tellg` is before it reads a keyword
   std::vector<PlyElement> elements;
+  bool read_here = false;  // a layout OpenMesh's reader cannot read: the pre-scan reads it
   std::string format;
   bool big_endian = false;
   bool ended = false;
@@ -170,7 +314,7 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
     if (keyword == "end_header") {
       if (!tokens.empty()) throw_invalid(file, where + "unexpected text after end_header");
       ended = true;
-      if (format != "ascii") {
+      if (format != "ascii" && !read_here) {
         // OpenMesh seeks to 12 (or 14 after "\r\n") bytes past its stream position before the
         // end_header keyword, which is right only when "\nend_header\n" directly follows the
         // last token of the header.
@@ -224,6 +368,19 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
         }
         property.is_vertex_indices =
             element.name == "face" && is_one_of(property.name, {"vertex_indices", "vertex_index"});
+        // MeshLab's per-face texture coordinates: read by the pre-scan itself.
+        const bool face_texcoords =
+            raw != nullptr && element.name == "face" && property.name == "texcoord";
+        if (face_texcoords) {
+          if (!property.type->is_float) {
+            throw_invalid(file, where + "texture coordinates must have a real type, got " +
+                                    in_quotes(tokens[2]));
+          }
+          property.reading = PlyReading::as_float;
+          read_here = true;
+          element.properties.push_back(std::move(property));
+          continue;
+        }
         if (!property.is_vertex_indices) {
           throw_invalid(file, where + "list property " + in_quotes(property.name) + " of element " +
                                   in_quotes(element.name) +
@@ -398,11 +555,80 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
     return scan;
   }
 
+  // A layout OpenMesh's reader cannot read is read here, its vertex and face records value by
+  // value.
+  std::optional<PlyRecords> records;
+  const auto vertex_index = static_cast<std::size_t>(vertex_element - elements.data());
+  if (read_here) records.emplace(*raw, *vertex_element, elements[face_element]);
+  const auto collected = [&](std::size_t i) {
+    return records && (i == vertex_index || i == face_element);
+  };
+  const auto collect = [&](std::size_t i, std::size_t property, double value, std::int64_t index) {
+    if (i == vertex_index)
+      records->vertex_value(property, value);
+    else
+      records->face_value(property, index, value);
+  };
+  const auto end_record = [&](std::size_t i) {
+    if (i == vertex_index)
+      records->end_vertex();
+    else
+      records->end_face();
+  };
+  scan.read_natively = records.has_value();
+
   if (!ascii) {
+    // The length of a binary list, read at its start.
+    const auto list_length = [&](const PlyElement& element, std::uint64_t r,
+                                 const PlyProperty& property) {
+      unsigned char count_bytes[8];
+      if (!in.read_bytes(count_bytes, property.count_type->bytes)) truncated(element, r);
+      const std::int64_t count = decode_integer(count_bytes, property.count_type->bytes,
+                                                property.count_type->is_signed, big_endian);
+      if (count < 0) {
+        throw_invalid(file, element.name + " " + std::to_string(r) + " has a negative " +
+                                property.name + " count (" + std::to_string(count) + ")");
+      }
+      return count;
+    };
     for (std::size_t i = 0; i < read_elements; ++i) {
       const PlyElement& element = elements[i];
       const bool has_list = std::any_of(element.properties.begin(), element.properties.end(),
                                         [](const PlyProperty& p) { return p.is_list; });
+      if (collected(i)) {
+        unsigned char bytes[8];
+        const auto value_at = [&](const PlyType& type) {
+          return type.is_float ? decode_real(bytes, type.bytes, big_endian)
+                               : static_cast<double>(
+                                     decode_integer(bytes, type.bytes, type.is_signed, big_endian));
+        };
+        for (std::uint64_t r = 0; r < element.count; ++r) {
+          for (std::size_t p = 0; p < element.properties.size(); ++p) {
+            const PlyProperty& property = element.properties[p];
+            if (!property.is_list) {
+              if (!in.read_bytes(bytes, property.type->bytes)) truncated(element, r);
+              collect(i, p, value_at(*property.type), 0);
+              continue;
+            }
+            const std::int64_t count = list_length(element, r, property);
+            if (multiply_saturating(static_cast<std::uint64_t>(count), property.type->bytes) >
+                in.remaining())
+              truncated(element, r);
+            for (std::int64_t k = 0; k < count; ++k) {
+              in.read_bytes(bytes, property.type->bytes);
+              if (property.is_vertex_indices)
+                collect(i, p, 0.0,
+                        decode_integer(bytes, property.type->bytes, property.type->is_signed,
+                                       big_endian));
+              else
+                collect(i, p, value_at(*property.type), 0);
+            }
+            if (property.is_vertex_indices) scan.corners += static_cast<std::uint64_t>(count);
+          }
+          end_record(i);
+        }
+        continue;
+      }
       if (!has_list) {
         std::uint64_t record = 0;
         for (const PlyProperty& property : element.properties) record += property.type->bytes;
@@ -418,14 +644,7 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
             if (!in.skip(property.type->bytes)) truncated(element, r);
             continue;
           }
-          unsigned char count_bytes[8];
-          if (!in.read_bytes(count_bytes, property.count_type->bytes)) truncated(element, r);
-          const std::int64_t count = decode_integer(count_bytes, property.count_type->bytes,
-                                                    property.count_type->is_signed, big_endian);
-          if (count < 0) {
-            throw_invalid(file, element.name + " " + std::to_string(r) + " has a negative " +
-                                    property.name + " count (" + std::to_string(count) + ")");
-          }
+          const std::int64_t count = list_length(element, r, property);
           if (!in.skip(
                   multiply_saturating(static_cast<std::uint64_t>(count), property.type->bytes))) {
             truncated(element, r);
@@ -464,13 +683,27 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
       }
     }
   };
+  // A value checked by check_value, for the records read here.
+  const auto collect_token = [&](std::size_t i, std::size_t p, std::string_view value) {
+    const PlyProperty& property = elements[i].properties[p];
+    std::int64_t index = 0;
+    double real = 0.0;
+    if (property.is_vertex_indices)
+      parse_integer(value, index);
+    else
+      classify_float(value, nullptr, &real);
+    collect(i, p, real, index);
+  };
   for (std::size_t i = 0; i < read_elements; ++i) {
     const PlyElement& element = elements[i];
+    const bool collecting = collected(i);
     for (std::uint64_t r = 0; r < element.count; ++r) {
-      for (const PlyProperty& property : element.properties) {
+      for (std::size_t p = 0; p < element.properties.size(); ++p) {
+        const PlyProperty& property = element.properties[p];
         if (!tokens.next(token)) truncated(element, r);
         if (!property.is_list) {
           check_value(element, r, property, token);
+          if (collecting) collect_token(i, p, token);
           continue;
         }
         std::int64_t count = 0;
@@ -482,9 +715,11 @@ Prescan prescan_ply(FileScanner& in, const std::string& file, const LoadOptions&
         for (std::int64_t entry = 0; entry < count; ++entry) {
           if (!tokens.next(token)) truncated(element, r);
           check_value(element, r, property, token);
+          if (collecting) collect_token(i, p, token);
         }
         if (property.is_vertex_indices) scan.corners += static_cast<std::uint64_t>(count);
       }
+      if (collecting) end_record(i);
     }
   }
   if (read_elements == elements.size() && tokens.next(token)) {
