@@ -8,8 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 
+#include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/piece_width.h"
 #include "graph/messages.h"
@@ -18,6 +23,7 @@
 #include "graph/registry.h"
 #include "nodes/merge/collect_node.h"
 #include "nodes/merge/congruent.h"
+#include "nodes/refine/rejoin.h"
 
 namespace papercraft {
 
@@ -80,6 +86,148 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
   }
 }
 
+// One merge of a model's unfolded strips: the triangles printed twice dropped, congruent
+// boundaries merged, crumbs and narrow pieces joined in the plane.
+struct Merged {
+  ModelStrips strips;
+  std::vector<int> small;  // ids of the flat strips left under min_area
+  std::size_t twice = 0;   // triangles printed twice, dropped
+};
+
+Merged merge_model(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded,
+                   const MergeOptions& options, const PieceLimits& limits) {
+  Merged merged;
+  merged.strips = collect_model_strips(std::move(unfolded));
+  merged.strips.flat = drop_double_covered_triangles(std::move(merged.strips.flat), &merged.twice);
+  merged.strips.flat = merge_congruent(std::move(merged.strips.flat), options);
+  merged.strips.flat = join_small_and_narrow_strips(std::move(merged.strips.flat), limits.min_area,
+                                                    limits.min_width, options, &merged.small);
+  return merged;
+}
+
+bool glued_to_another(const FlatStrip& strip) {
+  return std::any_of(strip.boundary.begin(), strip.boundary.end(), [&](const BoundaryEdge& e) {
+    return e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id;
+  });
+}
+
+double narrow_share(const FlatStrip& strip, const PieceLimits& limits) {
+  return limits.min_width > 0.0
+             ? narrow_area_fraction(strip.vertices2d, strip.triangles, limits.min_width)
+             : 0.0;
+}
+
+// The pieces glued to another that are too small, plus those too narrow (over more than
+// `narrow_share` of their area: the share past which the merge hinges a narrow piece on).
+int shortfalls(const Merged& merged, const PieceLimits& limits, double narrow_share_bound) {
+  int count = 0;
+  for (const FlatStrip& strip : merged.strips.flat) {
+    if (!glued_to_another(strip)) continue;
+    count += std::find(merged.small.begin(), merged.small.end(), strip.id) != merged.small.end();
+    count += narrow_share(strip, limits) > narrow_share_bound;
+  }
+  return count;
+}
+
+// Where a piece is left too small or too narrow beside a neighbour, its 3D part and a
+// neighbouring part, glued back along the cut between them, may be one strip within the
+// tolerance after all: the cut that parted them was made higher up, for a larger part that was
+// not. Such a union, refined and certified as the graph refines a part, that unfolds in one
+// piece replaces the two strips, and the model is merged again; the change is kept when fewer
+// pieces are left too small or too narrow. At most kMostRejoins unions per model.
+constexpr int kMostRejoins = 8;
+
+Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded, Merged merged,
+                    ModelRun& model, const MergeOptions& options, const RefineOptions& refine) {
+  const PieceLimits limits = model.piece_limits();
+  const double scale = model.mm_per_unit();
+  RefineOptions decide_only = refine;  // the decision, not where the worst point lies
+  decide_only.decide.bounded.locate_maximum = false;
+  std::set<std::pair<const AcceptedStrip*, const AcceptedStrip*>> tried;
+  for (int round = 0; round < kMostRejoins; ++round) {
+    const int before = shortfalls(merged, limits, options.narrow_join_share);
+    if (before == 0) break;
+    struct Short {
+      int flat;
+      std::size_t source;
+      double area_mm2;
+      double narrow;
+    };
+    std::vector<Short> shorts;
+    for (const FlatStrip& strip : merged.strips.flat) {
+      if (!glued_to_another(strip)) continue;
+      const bool small =
+          std::find(merged.small.begin(), merged.small.end(), strip.id) != merged.small.end();
+      const double narrow = narrow_share(strip, limits);
+      if (small || narrow > options.narrow_join_share)
+        shorts.push_back({strip.id, static_cast<std::size_t>(strip.source_strip),
+                          flat_area(strip) * scale * scale, narrow});
+    }
+    bool improved = false;
+    const auto strips3d = merged.strips.strips3d;
+    for (const Short& piece : shorts) {
+      const auto& mine = strips3d[piece.source];
+      for (std::size_t j = 0; j < strips3d.size() && !improved; ++j) {
+        const auto& other = strips3d[j];
+        if (j == piece.source || !tried.insert({mine.get(), other.get()}).second) continue;
+        std::optional<JoinedStrip> one;
+        try {
+          const std::optional<Mesh> glued =
+              glue_pieces(*mine->candidate->part.mesh, *other->candidate->part.mesh);
+          if (glued) one = one_strip_of(*glued, model.refinement_tolerance(), decide_only);
+        } catch (const InvalidInputException& e) {
+          spdlog::debug("{}: parts {} and {} glued: {}", model.name, mine->candidate->part.path,
+                        other->candidate->part.path, e.what());
+        }
+        if (!one) continue;
+        const std::size_t accepted_faces = one->refined.piece.n_faces();
+        // The union takes the place (the path) of the earlier of the two.
+        const Part& first = (j < piece.source ? other : mine)->candidate->part;
+        auto candidate = std::make_shared<Candidate>();
+        static_cast<StripBoundaries&>(*candidate) = std::move(one->refined.boundaries);
+        candidate->part = first;
+        candidate->part.mesh = std::make_shared<const Mesh>(std::move(one->refined.piece));
+        candidate->part.depth = std::min(mine->candidate->part.depth, other->candidate->part.depth);
+        auto accepted = std::make_shared<AcceptedStrip>();
+        accepted->candidate = std::move(candidate);
+        accepted->strip = std::make_shared<const RuledStrip>(std::move(one->refined.strip));
+        accepted->upper_bound = one->refined.verdict.upper_bound;
+        accepted->certified = one->refined.verdict.certified;
+        auto joined = std::make_shared<UnfoldedStrip>();
+        joined->strip = std::move(accepted);
+        joined->flat.push_back(std::move(one->flat));
+        std::vector<std::shared_ptr<const UnfoldedStrip>> trial_unfolded;
+        for (const auto& u : unfolded)
+          if (u->strip != mine && u->strip != other) trial_unfolded.push_back(u);
+        trial_unfolded.push_back(std::move(joined));
+        Merged trial = merge_model(trial_unfolded, options, limits);
+        const int after = shortfalls(trial, limits, options.narrow_join_share);
+        spdlog::debug("{}: parts {} and {} are one strip ({} faces); pieces left short {} -> {}",
+                      model.name, mine->candidate->part.path, other->candidate->part.path,
+                      accepted_faces, before, after);
+        if (after >= before) continue;
+        std::ostringstream text;
+        text << "refined the part of a piece of " << std::lround(piece.area_mm2) << " mm^2"
+             << (piece.narrow > options.narrow_join_share
+                     ? ", narrower than min_width_mm over " +
+                           std::to_string(std::lround(100 * piece.narrow)) + "% of its area,"
+                     : std::string(","))
+             << " together with its neighbour's: glued along their cut, the two are one strip "
+                "within the tolerance (certified bound "
+             << one->refined.verdict.upper_bound * scale << " mm), so they print as one piece";
+        model.note(text.str());
+        spdlog::info("{}: {}", model.name, text.str());
+        unfolded = std::move(trial_unfolded);
+        merged = std::move(trial);
+        improved = true;
+      }
+      if (improved) break;
+    }
+    if (!improved) break;
+  }
+  return merged;
+}
+
 }  // namespace
 
 void register_merge_congruent(Registry& registry) {
@@ -107,28 +255,26 @@ void register_merge_congruent(Registry& registry) {
                 .gathers = true,
                 .outputs = {{"out", MessageType::of<ModelStrips>()}},
                 .params = table.specs(),
-                .create = [](const Params& params, const NodeContext&) {
+                .create = [](const Params& params, const NodeContext& context) {
                   const MergeOptions options = table.read(params);
-                  return make_body([options](const Envelope& in, Emitter& out) {
-                    ModelStrips strips =
-                        collect_model_strips(in.get<Gathered>().as<UnfoldedStrip>());
-                    std::size_t twice = 0;
-                    strips.flat = drop_double_covered_triangles(std::move(strips.flat), &twice);
-                    if (twice > 0) {
-                      const std::string text = "dropped " + std::to_string(twice) +
-                                               (twice == 1 ? " triangle" : " triangles") +
+                  const RefineOptions refine = context.refine;
+                  return make_body([options, refine](const Envelope& in, Emitter& out) {
+                    const PieceLimits limits = in.model->piece_limits();
+                    auto unfolded = in.get<Gathered>().as<UnfoldedStrip>();
+                    Merged merged = merge_model(unfolded, options, limits);
+                    merged = rejoin_in_3d(std::move(unfolded), std::move(merged), *in.model,
+                                          options, refine);
+                    if (merged.twice > 0) {
+                      const std::string text = "dropped " + std::to_string(merged.twice) +
+                                               (merged.twice == 1 ? " triangle" : " triangles") +
                                                " that an earlier piece prints too (the same three "
                                                "points: the strips of two parts "
                                                "can both cover a stretch of surface between them)";
                       in.model->note(text);
                       spdlog::info("{}: {}", in.model->name, text);
                     }
-                    strips.flat = merge_congruent(std::move(strips.flat), options);
-                    const PieceLimits limits = in.model->piece_limits();
-                    std::vector<int> small;
-                    strips.flat = join_small_and_narrow_strips(
-                        std::move(strips.flat), limits.min_area, limits.min_width, options, &small);
-                    note_unbuildable_pieces(*in.model, strips.flat, small);
+                    ModelStrips strips = std::move(merged.strips);
+                    note_unbuildable_pieces(*in.model, strips.flat, merged.small);
                     record(*in.model, strips);
                     out.emit("out", std::move(strips));
                   });

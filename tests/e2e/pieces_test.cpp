@@ -547,5 +547,24 @@ TEST(Pieces, LabelsNoLeaderReachesArePrintedClearNearTheirSeamOnElephantWithHole
   EXPECT_GE(checked, static_cast<int>(near_only.size()));
 }
 
+// couplingdown (libcgal-demo) at 2% printed a band 91 triangles long, narrower than 3 mm over
+// 32% of its area, beside a piece whose every hinge laid it over its neighbours. Its part and
+// a neighbouring part, glued back along the cut that parted them, are one strip within the
+// tolerance: the merge refines them together in 3D, certified, and the two print as one piece.
+TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
+  const auto meshes = libcgal_demo_meshes({"couplingdown"});
+  if (meshes.empty()) GTEST_SKIP() << "libcgal-demo is not installed";
+  const TriangleMesh& mesh = meshes.at("couplingdown");
+  const auto out = run_pipeline(mesh, "2%", "couplingdown");
+  expect_certified(mesh, out);
+  expect_exact_seams(out);
+  EXPECT_EQ(narrow_pieces(out), std::vector<int>{});
+  const std::string notes = out.report.at("notes").dump();
+  EXPECT_NE(notes.find("together with its neighbour's: glued along their cut, the two are one "
+                       "strip within the tolerance"),
+            std::string::npos)
+      << notes;
+}
+
 }  // namespace
 }  // namespace papercraft
