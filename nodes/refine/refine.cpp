@@ -36,8 +36,10 @@ StripBoundaries select_strip_boundaries(const Mesh& part, double tolerance,
   boundaries.a = selection_polyline(part, boundaries.first, boundaries.first_closed);
   boundaries.b = selection_polyline(part, boundaries.second, boundaries.second_closed);
   auto used = [&](const std::vector<int>& loop) {
+    // A loop side, or one of the two open chains a loop is split into (more than a vertex).
     auto chosen = [&](const std::vector<int>& side, bool closed) {
-      return closed && std::find(side.begin(), side.end(), loop.front()) != side.end();
+      return (closed || side.size() > 1) &&
+             std::find(side.begin(), side.end(), loop.front()) != side.end();
     };
     return chosen(boundaries.first, boundaries.first_closed) ||
            chosen(boundaries.second, boundaries.second_closed);

@@ -42,9 +42,33 @@ BoundarySelection closed_part_selection(const Mesh& part, int sweeps) {
   return {{from}, {to}, false, false};
 }
 
+// The loop and its farthest vertex; but where every vertex lies on the loop (a part one
+// triangle wide: a band of quads, a fan, a polygon cut into triangles), the farthest vertex is
+// on the loop itself and a strip from the loop to it would cover nothing. Then the loop is
+// split into two open chains at the two of its vertices farthest apart over the part (the
+// ends of a band), first from one to the other and second the rest, run the same way: the
+// strip runs between the two sides, as the band's own triangles do.
 BoundarySelection one_loop_selection(const Mesh& part, const std::vector<int>& loop) {
-  const int far = farthest_vertex(edge_graph_distances(part, loop));
-  return {loop, {far}, true, false};
+  const std::vector<double> from_loop = edge_graph_distances(part, loop);
+  const int far = farthest_vertex(from_loop);
+  if (far >= 0 && from_loop[far] > 0.0) return {loop, {far}, true, false};
+  if (loop.size() < 3) return {loop, {far}, true, false};
+  const int u = farthest_vertex(edge_graph_distances(part, {loop.front()}));
+  const int v = u < 0 ? -1 : farthest_vertex(edge_graph_distances(part, {u}));
+  const auto i = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), u) - loop.begin());
+  const auto j = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), v) - loop.begin());
+  if (i >= loop.size() || j >= loop.size() || i == j) return {loop, {far}, true, false};
+  // first: loop[start..end] along the loop, second: the rest, never empty.
+  const std::size_t n = loop.size();
+  std::size_t start = std::min(i, j), end = std::max(i, j);
+  if (start == 0 && end == n - 1) end = n - 2;
+  std::vector<int> first(loop.begin() + static_cast<std::ptrdiff_t>(start),
+                         loop.begin() + static_cast<std::ptrdiff_t>(end) + 1);
+  std::vector<int> second;
+  for (std::size_t k = end + 1; k % n != start; ++k) second.push_back(loop[k % n]);
+  // Both sides from the same end: the strip pairs their points in order.
+  std::reverse(second.begin(), second.end());
+  return {first, second, false, false};
 }
 
 // Loops first (boundary_loops order), then each loop's farthest vertex that is not on a loop.

@@ -3,7 +3,8 @@
 // selection"), with graph distances along the mesh edges (Dijkstra) as the paper's
 // approximation of geodesic distances:
 //   0 boundaries  two vertices approximately farthest apart (repeated farthest-point sweeps);
-//   1 boundary    the loop and the vertex farthest from it;
+//   1 boundary    the loop and the vertex farthest from it (a part one triangle wide: the
+//                 loop split into its two sides);
 //   >= 2          candidates are the loops and, for each loop, its farthest vertex unless that
 //                 vertex lies on a loop (the loop is then the better candidate); `geodesic`
 //                 takes the candidate pair farthest apart, `exhaustive` (exhaustive.h) the
@@ -40,8 +41,9 @@ struct GeodesicSelectOptions {
 /// \pre part has at least one face and no deleted elements; it should be connected
 ///      (vertices in other components count as unreachable and are never chosen).
 /// \throws InvalidInputException if the part has no face or options.sweeps < 1.
-/// Known limit: when every vertex lies on the single boundary loop (a one-triangle-wide
-/// part), the "farthest" vertex is on the loop itself.
+/// When every vertex lies on the single boundary loop (a part one triangle wide), the loop is
+/// split instead into two open chains at the two vertices farthest apart over the part: first
+/// runs along the loop from one to the other, second is the rest of the loop.
 BoundarySelection select_geodesic(const Mesh& part, const GeodesicSelectOptions& options = {});
 
 /// Every selection worth building a strip for: all pairs of candidates (each pair once,

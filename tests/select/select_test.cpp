@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "core/mesh.h"
 #include "nodes/refine/exhaustive_select.h"
+#include "nodes/refine/refine.h"
 #include "nodes/select/geodesic.h"
 
 namespace papercraft {
@@ -237,6 +238,55 @@ TEST(SelectGeodesic, InteriorFarthestVertexIsACandidate) {
   EXPECT_EQ(candidates[2].second, std::vector<int>{0});
   // The cone fan from the rim to the apex covers the part best.
   EXPECT_TRUE(same_selection(select_exhaustive(part), selection));
+}
+
+// A band one triangle wide has every vertex on its one boundary loop, so the vertex farthest
+// from the loop is on it, and a strip from the loop to that vertex covers nothing. This one, a
+// bent band of 8 quads from libigl's truck.obj (a developable wheel arch), made the refinement
+// fail ("no iso-line through the worst point splits it"). The loop is now split into the
+// band's two sides: two open chains, disjoint, together the whole loop, run the same way; and
+// the band is one strip within 2% of the truck's size.
+TEST(SelectGeodesic, ABandOneTriangleWideIsSplitIntoItsTwoSides) {
+  TriangleMesh band;
+  band.vertices = {{0.738743, -0.108598, 0.114097},  {0.73404, -0.0719911, -0.199747},
+                   {0.722707, 0.0220615, 0.129577},  {0.718004, 0.0586672, -0.184267},
+                   {0.768476, -0.104945, 0.114078},  {0.763836, -0.0683309, -0.199766},
+                   {0.777287, 0.0287629, 0.129541},  {0.772636, 0.0653748, -0.184298},
+                   {0.80397, -0.0858497, 0.115774},  {0.799304, -0.0492387, -0.198065},
+                   {0.823472, -0.0392451, 0.120917}, {0.818792, -0.00263852, -0.192916},
+                   {0.821824, 0.021485, 0.128025},   {0.817141, 0.0580908, -0.185808},
+                   {0.826175, 0.017769, 0.127526},   {0.821491, 0.0543756, -0.186307},
+                   {0.828074, 0.0125256, 0.126886},  {0.823387, 0.0491313, -0.186947}};
+  band.triangles = {{2, 3, 6},    {3, 7, 6},    {6, 7, 12},   {7, 13, 12},
+                    {12, 13, 14}, {13, 15, 14}, {14, 15, 16}, {15, 17, 16},
+                    {16, 17, 10}, {17, 11, 10}, {10, 11, 8},  {11, 9, 8},
+                    {8, 9, 4},    {9, 5, 4},    {4, 5, 0},    {5, 1, 0}};
+  const Mesh part = to_mesh(band);
+  const auto loops = boundary_loops(part);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_EQ(loops[0].size(), part.n_vertices());  // every vertex on the loop
+  const BoundarySelection selection = select_geodesic(part);
+  EXPECT_FALSE(selection.first_closed);
+  EXPECT_FALSE(selection.second_closed);
+  ASSERT_GE(selection.first.size(), 2u);
+  ASSERT_GE(selection.second.size(), 2u);
+  std::vector<int> both = selection.first;
+  both.insert(both.end(), selection.second.begin(), selection.second.end());
+  std::sort(both.begin(), both.end());
+  std::vector<int> loop = loops[0];
+  std::sort(loop.begin(), loop.end());
+  EXPECT_EQ(both, loop);  // disjoint, and the whole loop
+  // The same way: each side's first vertex is next to the other's on the loop.
+  const auto at = [&](int v) {
+    return std::find(loops[0].begin(), loops[0].end(), v) - loops[0].begin();
+  };
+  const auto n = static_cast<long>(loops[0].size());
+  EXPECT_EQ((at(selection.first.front()) - at(selection.second.front()) + n) % n, 1);
+  // The truck is 1.67 long: 2% of it. The band is one strip, within that.
+  const std::vector<RefinedStrip> strips = refine_part(part, 0.0333506);
+  ASSERT_EQ(strips.size(), 1u);
+  EXPECT_TRUE(strips[0].verdict.accept);
+  EXPECT_LE(strips[0].verdict.upper_bound, 0.0333506);
 }
 
 TEST(SelectExhaustive, HoledCylinderPicksTopAndBottom) {
