@@ -213,7 +213,13 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     }
     for (std::int64_t corner = 0; corner < count; ++corner) {
       std::int64_t index = 0;
-      const std::string_view token = next_token(tokens);
+      std::string_view token = next_token(tokens);
+      // The format is free: a face's indices may go on over the next lines (libigl writes
+      // one value a line).
+      while (token.empty() && next_off_line(in, line, scan.off_comments)) {
+        tokens = line;
+        token = next_token(tokens);
+      }
       if (token.empty()) {
         throw_invalid(file, at_line(in.line_number()) + "face " + std::to_string(face) +
                                 " declares " + std::to_string(count) + " vertices but lists " +

@@ -298,6 +298,19 @@ TEST_F(LoadOpenMeshTest, OffHeaderWithBlanksAndCountsOnItsLine) {
                                       {"exactly as 'OFF BINARY'"});
 }
 
+// OFF is free-format: libigl's inspired_mesh_quads_*.off write a face one value a line
+// ("4 887\n46\n888\n0"). The pre-scan reads a face's indices on over the next lines.
+TEST_F(LoadOpenMeshTest, OffFaceIndicesOverSeveralLines) {
+  std::string off = tetra_off();
+  off.replace(off.find("3 0 1 3\n"), 8, "3 0 \n1\n 3\n");
+  expect_closed_tetrahedron(load_mesh(write("lines.off", off)));
+  // A face whose indices run out at the end of the file is still refused.
+  std::string cut = tetra_off();
+  cut.resize(cut.rfind("3 1 2 3\n"));
+  cut += "3 1 2\n";
+  expect_error<InvalidInputException>(write("short.off", cut), {"face 3", "declares 3"});
+}
+
 TEST_F(LoadOpenMeshTest, OffBinary) {
   std::string data = "OFF BINARY\n";
   put_u32(data, 4);
