@@ -60,7 +60,8 @@ NarrowRaster narrow_raster_in_box(const std::vector<Vec2>& points,
                                   const Vec2& lo, const Vec2& hi, const NarrowRaster& grid);
 
 /// The narrow part of the piece (the cells narrow_area_fraction counts as narrow) split into
-/// connected regions (cells joined across sides or corners): the area of the largest, in the
+/// connected regions (cells joined across sides: a staircase of cells along a slanted edge is
+/// no band): the area of the largest, in the
 /// points' units squared. A tip (a cone's apex, a corner) is a small region, a sliver (a band
 /// narrower than `width` along a length) a long one, however small its share of the piece.
 /// `raster`, where given, gets narrow_raster of the piece (measured on the way).

@@ -79,6 +79,28 @@ TEST(PieceWidth, LargestNarrowRegionIsOneSliverNotTheirSum) {
   EXPECT_NEAR(largest_narrow_region(band, band_triangles, 3.0), 300.0, 20.0);  // to a row of cells
 }
 
+// A 200 mm square has no sliver at any turn: its edges slanted to the raster used to leave a
+// staircase of narrow cells one cell wide along the whole outline, joined at their corners into
+// one region of 200 mm^2 and more between 30 and 60 degrees. A band 2 mm wide and 150 mm long
+// stays one sliver of about 300 mm^2 at every turn.
+TEST(PieceWidth, LargestNarrowRegionDoesNotDependOnTheTurn) {
+  for (int step = 0; step <= 18; ++step) {
+    const double angle = step * 3.14159265358979323846 / 36.0;
+    SCOPED_TRACE(angle);
+    const double c = std::cos(angle), s = std::sin(angle);
+    const auto turned = [&](std::vector<Vec2> points) {
+      for (Vec2& p : points) p = Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y());
+      return points;
+    };
+    const std::vector<Vec2> square = turned({{0, 0}, {200, 0}, {200, 200}, {0, 200}});
+    EXPECT_LT(largest_narrow_region(square, {{0, 1, 2}, {0, 2, 3}}, 3.0), 5.0);
+    std::vector<Vec2> band;
+    std::vector<Triangle> band_triangles;
+    rectangle(150, 2.0, band, band_triangles);
+    EXPECT_NEAR(largest_narrow_region(turned(band), band_triangles, 3.0), 300.0, 25.0);
+  }
+}
+
 TEST(PieceWidth, NarrowMeasureIn3dFindsTheSliverAlongABentPiece) {
   // The plate with its two teeth of LargestNarrowRegionIsOneSliverNotTheirSum, the teeth folded
   // up by 60 degrees about the plate's edge: the same share and the same largest region (the
