@@ -222,8 +222,8 @@ double largest_narrow_region(const std::vector<Vec2>& points,
   // straight edge slanted to the grid, the cells the rasterised discs just miss form a
   // staircase one cell wide, each step touching the next at a corner, which joined would make
   // the whole outline of a large square turned by 30 to 60 degrees one "sliver" of 200 mm^2. A
-  // real band narrower than the disc is several cells across (a cell is at most an eighth of
-  // the width), so its cells meet across sides.
+  // band narrower than the disc but a cell or more wide (a cell is an eighth of the width) is
+  // rows of cells that meet across sides; one thinner than a cell may break up.
   std::vector<char> seen(narrow.size(), 0);
   std::vector<std::size_t> stack;
   long largest = 0;
