@@ -48,6 +48,13 @@ void record(ModelRun& model, const ModelStrips& strips) {
   });
 }
 
+// Whether a seam glues the piece to another piece.
+bool glued_to_another(const FlatStrip& strip) {
+  return std::any_of(strip.boundary.begin(), strip.boundary.end(), [&](const BoundaryEdge& e) {
+    return e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id;
+  });
+}
+
 // The pieces a person cannot handle, named in report.json and on stderr: those too small that
 // no neighbour takes, and those narrower than min_width_mm over more than their tips. A piece
 // glued to no other is a whole separate part of the model (a tooth, a claw, a button): no join
@@ -57,10 +64,7 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
   const double scale = model.mm_per_unit();
   const PieceLimits limits = model.piece_limits();
   for (const FlatStrip& strip : strips) {
-    const bool alone =
-        std::none_of(strip.boundary.begin(), strip.boundary.end(), [&](const BoundaryEdge& e) {
-          return e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id;
-        });
+    const bool alone = !glued_to_another(strip);
     const std::string why = alone ? ": it is a separate part of the model by itself (a larger "
                                     "--height or --scale prints it larger)"
                                   : "";
@@ -105,27 +109,40 @@ Merged merge_model(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded,
   return merged;
 }
 
-bool glued_to_another(const FlatStrip& strip) {
-  return std::any_of(strip.boundary.begin(), strip.boundary.end(), [&](const BoundaryEdge& e) {
-    return e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id;
-  });
-}
-
 double narrow_share(const FlatStrip& strip, const PieceLimits& limits) {
   return limits.min_width > 0.0
              ? narrow_area_fraction(strip.vertices2d, strip.triangles, limits.min_width)
              : 0.0;
 }
 
-// The pieces glued to another that are too small, plus those too narrow (over more than
-// `narrow_share` of their area: the share past which the merge hinges a narrow piece on).
-int shortfalls(const Merged& merged, const PieceLimits& limits, double narrow_share_bound) {
-  int count = 0;
+// A piece glued to another that is too small, or too narrow (over more than the share past
+// which the merge hinges a narrow piece on).
+struct Short {
+  std::size_t source;  // its 3D strip
+  bool small;
+  double narrow;  // share of its area narrower than min_width
+  double area_mm2;
+};
+
+std::vector<Short> short_pieces(const Merged& merged, const PieceLimits& limits,
+                                double narrow_bound, double mm_per_unit) {
+  std::vector<Short> shorts;
   for (const FlatStrip& strip : merged.strips.flat) {
     if (!glued_to_another(strip)) continue;
-    count += std::find(merged.small.begin(), merged.small.end(), strip.id) != merged.small.end();
-    count += narrow_share(strip, limits) > narrow_share_bound;
+    const bool small =
+        std::find(merged.small.begin(), merged.small.end(), strip.id) != merged.small.end();
+    const double narrow = narrow_share(strip, limits);
+    if (small || narrow > narrow_bound)
+      shorts.push_back({static_cast<std::size_t>(strip.source_strip), small, narrow,
+                        flat_area(strip) * mm_per_unit * mm_per_unit});
   }
+  return shorts;
+}
+
+// Each limit a short piece misses counts once.
+int shortfalls(const std::vector<Short>& shorts, double narrow_bound) {
+  int count = 0;
+  for (const Short& piece : shorts) count += piece.small + (piece.narrow > narrow_bound);
   return count;
 }
 
@@ -145,24 +162,10 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded, 
   decide_only.decide.bounded.locate_maximum = false;
   std::set<std::pair<const AcceptedStrip*, const AcceptedStrip*>> tried;
   for (int round = 0; round < kMostRejoins; ++round) {
-    const int before = shortfalls(merged, limits, options.narrow_join_share);
+    const std::vector<Short> shorts =
+        short_pieces(merged, limits, options.narrow_join_share, scale);
+    const int before = shortfalls(shorts, options.narrow_join_share);
     if (before == 0) break;
-    struct Short {
-      int flat;
-      std::size_t source;
-      double area_mm2;
-      double narrow;
-    };
-    std::vector<Short> shorts;
-    for (const FlatStrip& strip : merged.strips.flat) {
-      if (!glued_to_another(strip)) continue;
-      const bool small =
-          std::find(merged.small.begin(), merged.small.end(), strip.id) != merged.small.end();
-      const double narrow = narrow_share(strip, limits);
-      if (small || narrow > options.narrow_join_share)
-        shorts.push_back({strip.id, static_cast<std::size_t>(strip.source_strip),
-                          flat_area(strip) * scale * scale, narrow});
-    }
     bool improved = false;
     const auto strips3d = merged.strips.strips3d;
     for (const Short& piece : shorts) {
@@ -170,23 +173,23 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded, 
       for (std::size_t j = 0; j < strips3d.size() && !improved; ++j) {
         const auto& other = strips3d[j];
         if (j == piece.source || !tried.insert({mine.get(), other.get()}).second) continue;
+        std::optional<Mesh> glued;
         std::optional<JoinedStrip> one;
         try {
-          const std::optional<Mesh> glued =
-              glue_pieces(*mine->candidate->part.mesh, *other->candidate->part.mesh);
+          glued = glue_pieces(*mine->candidate->part.mesh, *other->candidate->part.mesh);
           if (glued) one = one_strip_of(*glued, model.refinement_tolerance(), decide_only);
         } catch (const InvalidInputException& e) {
           spdlog::debug("{}: parts {} and {} glued: {}", model.name, mine->candidate->part.path,
                         other->candidate->part.path, e.what());
         }
         if (!one) continue;
-        const std::size_t accepted_faces = one->refined.piece.n_faces();
+        const std::size_t accepted_faces = glued->n_faces();
         // The union takes the place (the path) of the earlier of the two.
         const Part& first = (j < piece.source ? other : mine)->candidate->part;
         auto candidate = std::make_shared<Candidate>();
         static_cast<StripBoundaries&>(*candidate) = std::move(one->refined.boundaries);
         candidate->part = first;
-        candidate->part.mesh = std::make_shared<const Mesh>(std::move(one->refined.piece));
+        candidate->part.mesh = std::make_shared<const Mesh>(std::move(*glued));
         candidate->part.depth = std::min(mine->candidate->part.depth, other->candidate->part.depth);
         auto accepted = std::make_shared<AcceptedStrip>();
         accepted->candidate = std::move(candidate);
@@ -201,7 +204,8 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded, 
           if (u->strip != mine && u->strip != other) trial_unfolded.push_back(u);
         trial_unfolded.push_back(std::move(joined));
         Merged trial = merge_model(trial_unfolded, options, limits);
-        const int after = shortfalls(trial, limits, options.narrow_join_share);
+        const int after = shortfalls(short_pieces(trial, limits, options.narrow_join_share, scale),
+                                     options.narrow_join_share);
         spdlog::debug("{}: parts {} and {} are one strip ({} faces); pieces left short {} -> {}",
                       model.name, mine->candidate->part.path, other->candidate->part.path,
                       accepted_faces, before, after);

@@ -64,13 +64,26 @@ StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
 
 std::optional<double> one_flat_strip_area(const Mesh& piece, double tolerance,
                                           const RefineOptions& options) {
-  const StripBoundaries sides = select_strip_boundaries(piece, tolerance, options);
-  const RuledStrip strip = build_strip(piece, sides, options);
-  if (strip.mesh.empty()) return std::nullopt;
-  const std::vector<FlatStrip> flat = unfold_strip(strip, 0, 0);
-  if (flat.size() != 1 || !decide_strip(piece, sides, strip, tolerance, options).accept)
-    return std::nullopt;
-  return flat_area(flat.front());
+  const std::optional<JoinedStrip> one = one_strip_of(piece, tolerance, options);
+  if (!one) return std::nullopt;
+  return flat_area(one->flat);
+}
+
+std::optional<JoinedStrip> one_strip_of(const Mesh& piece, double tolerance,
+                                        const RefineOptions& options) {
+  JoinedStrip one;
+  RefinedStrip& refined = one.refined;
+  refined.boundaries = select_strip_boundaries(piece, tolerance, options);
+  // A hole left over is a rejection (judge_strip), known before the strip is built.
+  if (!refined.boundaries.holes.empty()) return std::nullopt;
+  refined.strip = build_strip(piece, refined.boundaries, options);
+  if (refined.strip.mesh.empty()) return std::nullopt;
+  std::vector<FlatStrip> flat = unfold_strip(refined.strip, 0, 0);
+  if (flat.size() != 1) return std::nullopt;
+  refined.verdict = decide_strip(piece, refined.boundaries, refined.strip, tolerance, options);
+  if (!refined.verdict.accept) return std::nullopt;
+  one.flat = std::move(flat.front());
+  return one;
 }
 
 std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,

@@ -106,6 +106,20 @@ struct RefinedStrip {
   StripVerdict verdict;
 };
 
+/// A piece refined as one strip, and that strip unfolded (`refined.piece` is left empty: the
+/// caller has the piece).
+struct JoinedStrip {
+  RefinedStrip refined;
+  FlatStrip flat;  // ids 0: the caller numbers it
+};
+
+/// The strip of `piece` where it is one strip within `tolerance` (select, ruled and decide
+/// accept it; certified where the decision is) that unfolds into one flat strip without
+/// overlapping itself, and has no hole left over; nullopt otherwise. one_flat_strip_area is
+/// its flat strip's area.
+std::optional<JoinedStrip> one_strip_of(const Mesh& piece, double tolerance,
+                                        const RefineOptions& options);
+
 /// The whole refinement of `part` at the absolute `tolerance`: every accepted strip, in the
 /// order of their paths (depth first, pieces in cut order), as the graph would make them.
 /// \throws ApproximationException as cut_rejected_piece, InvalidInputException as the steps.

@@ -5,8 +5,6 @@
 #include <map>
 #include <vector>
 
-#include "nodes/unfold/sequential.h"
-
 namespace papercraft {
 
 std::optional<Mesh> glue_pieces(const Mesh& a, const Mesh& b) {
@@ -65,23 +63,6 @@ std::optional<Mesh> glue_pieces(const Mesh& a, const Mesh& b) {
   for (auto v : glued.vertices())
     if (!glued.is_manifold(v)) return std::nullopt;
   return glued;
-}
-
-std::optional<JoinedStrip> one_strip_of(const Mesh& piece, double tolerance,
-                                        const RefineOptions& options) {
-  JoinedStrip one;
-  RefinedStrip& refined = one.refined;
-  refined.boundaries = select_strip_boundaries(piece, tolerance, options);
-  if (!refined.boundaries.holes.empty()) return std::nullopt;
-  refined.strip = build_strip(piece, refined.boundaries, options);
-  if (refined.strip.mesh.empty()) return std::nullopt;
-  std::vector<FlatStrip> flat = unfold_strip(refined.strip, 0, 0);
-  if (flat.size() != 1) return std::nullopt;
-  refined.verdict = decide_strip(piece, refined.boundaries, refined.strip, tolerance, options);
-  if (!refined.verdict.accept) return std::nullopt;
-  refined.piece = piece;
-  one.flat = std::move(flat.front());
-  return one;
 }
 
 }  // namespace papercraft

@@ -14,6 +14,7 @@
 #include "core/flat_boundary.h"
 #include "core/generate.h"
 #include "core/mesh.h"
+#include "nodes/refine/refine.h"
 
 namespace papercraft {
 namespace {
