@@ -758,6 +758,70 @@ double move_copies_apart(Soup& soup, const std::vector<char>& on_cut_edge, std::
   return moved;
 }
 
+// Where the mesh has a non-manifold edge: the faces of each part joined across edges of exactly
+// two faces flipped to agree with their neighbours (the part's majority way kept), before its
+// non-manifold edges are paired into sheets. A part that cannot agree (a Moebius strip) is left
+// as it is, for the check after the pairing to name. `uses` sorted by key, as
+// check_topology_and_orient sorts them. Returns the number of faces flipped.
+std::uint64_t orient_across_manifold_edges(Soup& soup, const std::vector<EdgeUse>& uses) {
+  const std::size_t triangles = soup.triangles.size();
+  bool any_non_manifold = false;
+  for (std::size_t i = 0; i + 2 < uses.size() && !any_non_manifold; ++i)
+    any_non_manifold = uses[i].key == uses[i + 2].key;
+  if (!any_non_manifold) return 0;
+  std::vector<int> across(3 * triangles, -1);  // slot -> the other slot of its two-face edge
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i + 1;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    if (j - i == 2) {
+      across[uses[i].slot] = static_cast<int>(uses[i + 1].slot);
+      across[uses[i + 1].slot] = static_cast<int>(uses[i].slot);
+    }
+    i = j;
+  }
+  std::vector<char> seen(triangles, 0), flip(triangles, 0);
+  std::vector<std::uint32_t> members, stack;
+  std::uint64_t flipped = 0;
+  for (std::size_t seed = 0; seed < triangles; ++seed) {
+    if (seen[seed]) continue;
+    seen[seed] = 1;
+    members.clear();
+    stack.assign(1, static_cast<std::uint32_t>(seed));
+    bool agrees = true;
+    while (!stack.empty()) {
+      const std::uint32_t t = stack.back();
+      stack.pop_back();
+      members.push_back(t);
+      for (int k = 0; k < 3; ++k) {
+        const int other = across[3 * t + k];
+        if (other < 0) continue;
+        const auto u = static_cast<std::uint32_t>(other / 3);
+        // Two faces agree where they run their shared edge opposite ways.
+        const bool same_way = soup.triangles[u][other % 3] == soup.triangles[t][k];
+        const char wanted = static_cast<char>(flip[t] ^ (same_way ? 1 : 0));
+        if (!seen[u]) {
+          seen[u] = 1;
+          flip[u] = wanted;
+          stack.push_back(u);
+        } else if (flip[u] != wanted) {
+          agrees = false;
+        }
+      }
+    }
+    std::size_t flips = 0;
+    for (std::uint32_t t : members) flips += flip[t];
+    const bool minority = 2 * flips <= members.size();
+    if (!agrees) continue;
+    for (std::uint32_t t : members) {
+      if (static_cast<bool>(flip[t]) != minority) continue;
+      std::swap(soup.triangles[t][1], soup.triangles[t][2]);
+      if (!soup.corner_uv.empty()) std::swap(soup.corner_uv[t][1], soup.corner_uv[t][2]);
+      ++flipped;
+    }
+  }
+  return flipped;
+}
+
 // Checks manifoldness; with `repair`, makes the orientation consistent and closed components face
 // outwards. neighbor[3 t + k] is the triangle across edge k (t[k] -> t[k+1]) or -1.
 void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
@@ -766,7 +830,7 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
   // Every edge use, sorted by (key, slot): bucketed by the lower vertex in slot order (a
   // counting sort), then each bucket, a vertex's few edges, stably sorted by the higher vertex.
   std::vector<EdgeUse> uses(3 * triangles);
-  {
+  const auto sort_uses = [&] {
     std::vector<std::uint32_t> start(soup.positions.size() + 1, 0);
     auto lower = [&](std::size_t slot) {
       const int a = soup.triangles[slot / 3][slot % 3];
@@ -785,6 +849,16 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
     for (std::size_t v = 0; v + 1 < start.size(); ++v)
       std::stable_sort(uses.begin() + start[v], uses.begin() + start[v + 1],
                        [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
+  };
+  sort_uses();
+  // The faces around a non-manifold edge are paired into sheets by the way they run, which means
+  // something only where they agree with their neighbours: a two-sided surface keeps one face of
+  // each pair whichever way it faces, and paired as they lay its sheets made a Moebius strip
+  // (trimesh's chair_model). So first the faces are made to agree across the edges of two faces.
+  std::uint64_t pre_oriented = 0;
+  if (repair) {
+    pre_oriented = orient_across_manifold_edges(soup, uses);
+    if (pre_oriented > 0) sort_uses();
   }
 
   auto edge_vertices = [&](std::uint64_t key) {
@@ -1042,6 +1116,7 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
     std::swap(soup.triangles[t][1], soup.triangles[t][2]);
     if (!soup.corner_uv.empty()) std::swap(soup.corner_uv[t][1], soup.corner_uv[t][2]);
   }
+  reoriented += pre_oriented;
   if (reoriented > 0) {
     repairs.push_back("reoriented " + counted(reoriented, "face", "faces") +
                       " to agree with their neighbours");

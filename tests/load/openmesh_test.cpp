@@ -819,6 +819,27 @@ TEST_F(LoadOpenMeshTest, TwoSolidsTouchingAlongAnEdgeAreCutApart) {
       << loaded.repairs[0];
 }
 
+// The same two solids with one face of each facing the wrong way (0 3 1 and 0 4 5), as a
+// two-sided export keeps whichever side it wrote first: the faces around edge 0-1 no longer
+// alternate in and out, and paired as they ran, a sheet took a face of each solid and an edge
+// had to be opened to part them again. The faces are made to agree with their neighbours
+// first, so each solid is paired with itself and stays closed, with nothing opened.
+TEST_F(LoadOpenMeshTest, SolidsWithFacesTheWrongWayArePairedBySolid) {
+  const fs::path path = write("touching_flipped.off",
+                              "OFF\n6 8 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 -1 0\n0 0 -1\n"
+                              "3 0 2 1\n3 0 3 1\n3 0 3 2\n3 1 2 3\n"
+                              "3 0 4 1\n3 0 1 5\n3 0 4 5\n3 1 4 5\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_two_closed_tetrahedra(loaded);
+  const auto& repairs = loaded.repairs;
+  EXPECT_FALSE(std::any_of(repairs.begin(), repairs.end(), [](const std::string& r) {
+    return r.find("opened") != std::string::npos;
+  })) << testing::PrintToString(repairs);
+  EXPECT_TRUE(std::any_of(repairs.begin(), repairs.end(), [](const std::string& r) {
+    return r.find("reoriented 2 faces") != std::string::npos;
+  })) << testing::PrintToString(repairs);
+}
+
 TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
   // Two closed tetrahedra that share only vertex 0; the second's first corner names a
   // different fan of vertex 0 than the first's.
