@@ -758,6 +758,30 @@ double move_copies_apart(Soup& soup, const std::vector<char>& on_cut_edge, std::
   return moved;
 }
 
+// A volume mesh (the cells of a grid or a tetrahedralisation, each inner face written once) is
+// no surface to print: nearly every edge inside it is shared by three or more faces, where a
+// surface has them only where sheets touch by accident. Cut apart, its cells would print as
+// thousands of closed boxes, after a refinement of many minutes (libigl's cube_40k: 8,000
+// cubes, over 400 s). Refused when more than kVolumeShare of its edges (and at least
+// kVolumeEdges) are shared by three or more faces. `uses` sorted by key.
+void check_not_a_volume_mesh(const std::vector<EdgeUse>& uses, const std::string& file) {
+  constexpr double kVolumeShare = 0.25;
+  constexpr std::uint64_t kVolumeEdges = 64;
+  std::uint64_t edges = 0, shared = 0;
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i + 1;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    ++edges;
+    shared += j - i >= 3;
+    i = j;
+  }
+  if (shared < kVolumeEdges || static_cast<double>(shared) <= kVolumeShare * edges) return;
+  throw_invalid(file, std::to_string(shared) + " of its " + std::to_string(edges) +
+                          " edges are shared by three or more faces: this looks like a volume "
+                          "mesh (cells with their inner faces), not a surface; export the "
+                          "outer surface of the model instead");
+}
+
 // Where the mesh has a non-manifold edge: the faces of each part joined across edges of exactly
 // two faces flipped to agree with their neighbours (the part's majority way kept), before its
 // non-manifold edges are paired into sheets. A part that cannot agree (a Moebius strip) is left
@@ -851,6 +875,7 @@ void check_topology_and_orient(Soup& soup, bool repair, const std::string& file,
                        [](const EdgeUse& x, const EdgeUse& y) { return x.key < y.key; });
   };
   sort_uses();
+  if (repair) check_not_a_volume_mesh(uses, file);
   // The faces around a non-manifold edge are paired into sheets by the way they run, which means
   // something only where they agree with their neighbours: a two-sided surface keeps one face of
   // each pair whichever way it faces, and paired as they lay its sheets made a Moebius strip

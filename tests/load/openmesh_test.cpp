@@ -840,6 +840,50 @@ TEST_F(LoadOpenMeshTest, SolidsWithFacesTheWrongWayArePairedBySolid) {
   })) << testing::PrintToString(repairs);
 }
 
+// A 3 x 3 x 3 grid of cubes with every face of every cell written once, as a volume mesh is:
+// of its 252 edges, the 36 inside have four faces and the 72 on the outside between two cells
+// three. It is refused as such, quickly, rather than cut into 27 closed boxes. One cell alone
+// (a plain cube) loads.
+TEST_F(LoadOpenMeshTest, AVolumeMeshIsRefused) {
+  const auto grid = [](int n) {
+    const auto id = [n](int x, int y, int z) { return (x * (n + 1) + y) * (n + 1) + z; };
+    std::ostringstream vertices, faces;
+    int count = 0;
+    for (int x = 0; x <= n; ++x)
+      for (int y = 0; y <= n; ++y)
+        for (int z = 0; z <= n; ++z) vertices << x << ' ' << y << ' ' << z << '\n';
+    // Each lattice square, in each of the three planes, as two triangles.
+    for (int axis = 0; axis < 3; ++axis)
+      for (int a = 0; a <= n; ++a)
+        for (int b = 0; b < n; ++b)
+          for (int c = 0; c < n; ++c) {
+            std::array<std::array<int, 3>, 4> p;
+            const std::array<std::array<int, 2>, 4> uv = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+            for (int k = 0; k < 4; ++k) {
+              std::array<int, 3> q{};
+              q[axis] = a;
+              q[(axis + 1) % 3] = b + uv[k][0];
+              q[(axis + 2) % 3] = c + uv[k][1];
+              p[k] = q;
+            }
+            const auto v = [&](int k) { return id(p[k][0], p[k][1], p[k][2]); };
+            faces << "3 " << v(0) << ' ' << v(1) << ' ' << v(2) << "\n3 " << v(0) << ' ' << v(2)
+                  << ' ' << v(3) << '\n';
+            count += 2;
+          }
+    return "OFF\n" + std::to_string((n + 1) * (n + 1) * (n + 1)) + ' ' + std::to_string(count) +
+           " 0\n" + vertices.str() + faces.str();
+  };
+  expect_error<InvalidInputException>(write("cells.off", grid(3)),
+                                      {"cells.off",
+                                       "108 of its 252 edges are shared by three or "
+                                       "more faces",
+                                       "volume mesh"});
+  const LoadedMesh cube = load_mesh(write("cell.off", grid(1)));
+  EXPECT_EQ(cube.mesh.n_faces(), 12u);
+  EXPECT_TRUE(boundary_loops(cube.mesh).empty());
+}
+
 TEST_F(LoadOpenMeshTest, NonManifoldVertex) {
   // Two closed tetrahedra that share only vertex 0; the second's first corner names a
   // different fan of vertex 0 than the first's.
