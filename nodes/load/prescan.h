@@ -27,6 +27,7 @@ struct Prescan {
   std::string ply_texture;                 // PLY "comment TextureFile <name>"
   bool off_comments = false;               // an ascii OFF with '#' comments
   std::uint64_t off_face_extras = 0;       // OFF faces with values after their indices
+  std::uint64_t obj_continuations = 0;     // OBJ lines ending in a backslash (go on on the next)
   /// Faces of no area that OpenMesh's reader drops, counted in `faces` and `corners` (STL
   /// triangles two of whose corners coincide, OBJ faces of fewer than 3 distinct vertices): with
   /// the repair on, their removal is logged; without it they are an error.
@@ -54,7 +55,8 @@ void check_some_faces(const std::string& file, const Prescan& scan);
 
 /// OBJ: every v, vt and f line parsed; faces OpenMesh would shrink refused, and those it would
 /// drop (fewer than 3 distinct vertices) counted in `dropped_faces`, an error without
-/// options.repair; the first mtllib resolved against `path`'s folder.
+/// options.repair; the first mtllib resolved against `path`'s folder. A line ending in a
+/// backslash goes on on the next (counted in `obj_continuations`).
 Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesystem::path& path,
                     const LoadOptions& options);
 /// OFF, ascii or "OFF BINARY": the header, the counts against the file size, every record.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -10,6 +11,14 @@
 #include "nodes/load/prescan.h"
 
 namespace papercraft::load_internal {
+namespace {
+
+bool ends_in_backslash(std::string_view line) {
+  const std::string_view body = trim(line);
+  return !body.empty() && body.back() == '\\';
+}
+
+}  // namespace
 
 Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesystem::path& path,
                     const LoadOptions& options) {
@@ -19,7 +28,26 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
   std::uint64_t first_degenerate_line = 0;
   std::vector<std::int64_t> face;
   std::string_view line;
+  std::string joined;  // a statement continued over several lines, without the backslashes
   while (in.next_line(line)) {
+    // A line ending in a backslash goes on on the next (Rhino writes long faces so): the
+    // statement is read whole, and messages name the line it starts on.
+    const std::uint64_t line_number = in.line_number();
+    if (ends_in_backslash(line)) {
+      joined.clear();
+      std::string_view part = line;
+      while (ends_in_backslash(part)) {
+        const std::string_view body = trim(part);
+        joined.append(body.substr(0, body.size() - 1)).push_back(' ');
+        ++scan.obj_continuations;
+        if (!in.next_line(part)) {
+          part = {};
+          break;
+        }
+      }
+      joined.append(part);
+      line = joined;
+    }
     std::string_view rest = trim(line);
     if (rest.empty() || rest.front() == '#') continue;
     const std::string_view keyword = next_token(rest);
@@ -28,12 +56,12 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
         const std::string_view token = next_token(rest);
         const NumberKind kind = classify_float(token);
         if (kind == NumberKind::non_finite) {
-          throw_invalid(file, at_line(in.line_number()) + "vertex " +
-                                  std::to_string(scan.vertices) + " has a non-finite coordinate " +
-                                  in_quotes(token) + " (NaN, infinite or beyond single precision)");
+          throw_invalid(file, at_line(line_number) + "vertex " + std::to_string(scan.vertices) +
+                                  " has a non-finite coordinate " + in_quotes(token) +
+                                  " (NaN, infinite or beyond single precision)");
         }
         if (kind == NumberKind::invalid) {
-          throw_invalid(file, at_line(in.line_number()) + "expected 3 coordinates after 'v', got " +
+          throw_invalid(file, at_line(line_number) + "expected 3 coordinates after 'v', got " +
                                   in_quotes(trim(line)));
         }
       }
@@ -43,7 +71,7 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
         const std::string_view token = next_token(rest);
         const NumberKind kind = classify_float(token);
         if (kind != NumberKind::finite) {
-          throw_invalid(file, at_line(in.line_number()) +
+          throw_invalid(file, at_line(line_number) +
                                   "expected 2 finite texture coordinates after 'vt', got " +
                                   in_quotes(trim(line)));
         }
@@ -53,8 +81,7 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
       for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
         std::int64_t index = 0;
         if (!parse_integer(token.substr(0, token.find('/')), index) || index == 0) {
-          throw_invalid(file, at_line(in.line_number()) + "bad vertex reference " +
-                                  in_quotes(token) +
+          throw_invalid(file, at_line(line_number) + "bad vertex reference " + in_quotes(token) +
                                   " in a face (expected a non-zero vertex number, optionally "
                                   "followed by /texcoord/normal)");
         }
@@ -71,7 +98,7 @@ Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesys
         ++scan.dropped_faces;
         scan.dropped_corners += face.size();
       } else if (distinct < face.size() || face.size() < 3) {
-        if (degenerate++ == 0) first_degenerate_line = in.line_number();
+        if (degenerate++ == 0) first_degenerate_line = line_number;
       }
       ++scan.faces;
       scan.corners += face.size();

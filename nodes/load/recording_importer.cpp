@@ -187,6 +187,26 @@ std::string clean_off(const std::filesystem::path& path, const std::string& file
   return out;
 }
 
+// An OBJ as OpenMesh's reader can take it: each line ending in a backslash joined with the next
+// (the backslash dropped), as the pre-scan read it.
+std::string clean_obj(const std::filesystem::path& path, const std::string& file) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw_io(file, "cannot open the file");
+  std::string out;
+  std::string line;
+  while (std::getline(in, line)) {
+    const std::string_view content = trim(line);
+    if (!content.empty() && content.back() == '\\') {
+      out.append(content.substr(0, content.size() - 1));
+      out.push_back(' ');
+    } else {
+      out.append(line);
+      out.push_back('\n');
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 RawMesh read_with_openmesh(const std::filesystem::path& path, const std::string& file,
@@ -199,24 +219,43 @@ RawMesh read_with_openmesh(const std::filesystem::path& path, const std::string&
   options += OpenMesh::IO::Options::VertexColor;
   options += OpenMesh::IO::Options::FaceColor;
   // OpenMesh's stream reader skips the header check that sets the OFF reader's options, so a
-  // cleaned OFF goes through a temporary file.
+  // cleaned OFF goes through a temporary file; so does an OBJ with lines continued by a
+  // backslash, in a folder of its own with a link to its material library under the name the
+  // file gives it (OpenMesh looks for it beside the OBJ), so its materials still load.
   std::filesystem::path source = path;
   struct RemoveOnExit {
-    std::filesystem::path path;
+    std::filesystem::path folder;
     ~RemoveOnExit() {
       std::error_code ignored;
-      if (!path.empty()) std::filesystem::remove(path, ignored);
+      if (!folder.empty()) std::filesystem::remove_all(folder, ignored);
     }
   } cleaned;
-  if (scan.format == Format::off && (scan.off_comments || scan.off_face_extras > 0)) {
+  const bool clean =
+      (scan.format == Format::off && (scan.off_comments || scan.off_face_extras > 0)) ||
+      (scan.format == Format::obj && scan.obj_continuations > 0);
+  if (clean) {
     static std::atomic<std::uint64_t> counter{0};
-    cleaned.path = std::filesystem::temp_directory_path() /
-                   ("papercraft-clean-" + std::to_string(::getpid()) + "-" +
-                    std::to_string(counter.fetch_add(1)) + ".off");
-    std::ofstream out(cleaned.path, std::ios::binary);
-    out << clean_off(path, file, scan);
-    if (!out.flush()) throw_io(file, "cannot write a cleaned copy to " + cleaned.path.string());
-    source = cleaned.path;
+    std::error_code error;
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("papercraft-clean-" + std::to_string(::getpid()) +
+                                                  "-" + std::to_string(counter.fetch_add(1)));
+    std::filesystem::create_directory(folder, error);
+    if (error) throw_io(file, "cannot make a folder for a cleaned copy: " + error.message());
+    cleaned.folder = folder;
+    source = folder / path.filename();
+    std::ofstream out(source, std::ios::binary);
+    out << (scan.format == Format::off ? clean_off(path, file, scan) : clean_obj(path, file));
+    if (!out.flush()) throw_io(file, "cannot write a cleaned copy to " + source.string());
+    if (scan.format == Format::obj && !scan.material_library.empty()) {
+      const std::filesystem::path name =
+          scan.material_library.lexically_relative(path.parent_path());
+      const bool inside = !name.empty() && name.is_relative() && *name.begin() != "..";
+      if (inside && std::filesystem::exists(scan.material_library, error)) {
+        std::filesystem::create_directories((folder / name).parent_path(), error);
+        std::filesystem::create_symlink(std::filesystem::absolute(scan.material_library, error),
+                                        folder / name, error);
+      }
+    }
   }
   // The reader modules are process-wide singletons that keep per-file state in members.
   static std::mutex reader_mutex;

@@ -14,6 +14,7 @@
 #include <initializer_list>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <tuple>
@@ -216,6 +217,36 @@ TEST_F(LoadOpenMeshTest, ObjWithTextureCoordinatesAndMaterial) {
   EXPECT_EQ(loaded.input_vertices, 4u);
   EXPECT_EQ(loaded.input_faces, 4u);
   for (auto v : loaded.mesh.vertices()) EXPECT_EQ(input_vertex_of(loaded.mesh, v), v.idx());
+}
+
+// Rhino writes a long face over several lines, each but the last ending in a backslash. The
+// statement is read whole (OpenMesh's reader takes a copy with the lines joined, in a folder of
+// its own with a link to the material library), so the faces, UVs and the material survive;
+// a message about a continued statement names the line it starts on.
+TEST_F(LoadOpenMeshTest, ObjLinesContinuedByABackslash) {
+  write("materials/wood.mtl", "newmtl wood\nKd 1 1 1\nmap_Kd textures/wood.png\n");
+  const fs::path path = write("continued.obj",
+                              "mtllib materials/wood.mtl\n"
+                              "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                              "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\n"
+                              "usemtl wood\n"
+                              "f 1/1 3/3 \\\n  2/2\nf 1/1 \\\n2/2 \\\n4/4\nf 1/1 4/4 3/3\n"
+                              "f 2/2 3/3 4/4\n");
+  const LoadedMesh loaded = load_mesh(path);
+  expect_closed_tetrahedron(loaded);
+  EXPECT_TRUE(loaded.has_uvs);
+  EXPECT_EQ(loaded.mesh.texcoord2D(Mesh::VertexHandle(3)), OpenMesh::Vec2d(1, 1));
+  EXPECT_EQ(fs::path(loaded.texture_path), dir_ / "materials/textures/wood.png");
+  EXPECT_EQ(loaded.input_faces, 4u);
+  EXPECT_TRUE(loaded.repairs.empty()) << testing::PrintToString(loaded.repairs);
+  for (const auto& entry : fs::directory_iterator(fs::temp_directory_path()))
+    EXPECT_EQ(entry.path().filename().string().find("papercraft-clean-" +
+                                                    std::to_string(::getpid()) + "-"),
+              std::string::npos)
+        << entry.path();
+  expect_error<InvalidInputException>(
+      write("continued_bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 \\\n2 x\n"),
+      {"continued_bad.obj", "line 4", "bad vertex reference 'x'"});
 }
 
 TEST_F(LoadOpenMeshTest, ObjUvSeamKeepsVerticesAndStoresCornerUvs) {
