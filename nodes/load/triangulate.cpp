@@ -154,7 +154,7 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
                              ? raw.corners.size() - 2 * raw.n_faces()
                              : raw.n_faces());
   std::uint64_t polygons = 0, non_convex = 0, self_intersecting = 0, twisted_quads = 0,
-                twisted_polygons = 0;
+                twisted_polygons = 0, with_flat_corner = 0;
   std::size_t first_self_intersecting = 0;
   std::vector<const Vec3d*> points;
   std::vector<std::array<std::size_t, 3>> ears;
@@ -168,12 +168,35 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
       for (std::size_t i = 0; i < size; ++i) {
         normal += cross(raw.positions[corner[i]], raw.positions[corner[(i + 1) % size]]);
       }
-      bool folds = false;
+      // A fan folds where one of its triangles turns against the normal, and makes a triangle
+      // of no area where the fan's corner lies on the line through two others (a CAD polygon
+      // with a corner in the middle of a side, where a neighbour's corner meets it): either way
+      // the polygon is ear-clipped, which clips no flat corner.
+      bool folds = false, flat = false;
+      const double least_turn = 1e-9 * OpenMesh::norm(normal);
       for (std::size_t i = 1; i + 1 < size; ++i) {
         const Vec3d& origin = raw.positions[corner[0]];
         const Vec3d turn =
             cross(raw.positions[corner[i]] - origin, raw.positions[corner[i + 1]] - origin);
         if (OpenMesh::dot(turn, normal) < 0.0) folds = true;
+        if (OpenMesh::norm(turn) <= least_turn) flat = true;
+      }
+      if (flat && !folds) {
+        points.resize(size);
+        for (std::size_t i = 0; i < size; ++i) points[i] = &raw.positions[corner[i]];
+        if (ear_clip(points.data(), size, normal, ears)) {
+          ++with_flat_corner;
+          for (const auto& ear : ears) {
+            soup.triangles.push_back({corner[ear[0]], corner[ear[1]], corner[ear[2]]});
+            soup.source_face.push_back(static_cast<int>(f));
+            if (with_uvs) {
+              soup.corner_uv.push_back({raw.corner_uv[begin + ear[0]],
+                                        raw.corner_uv[begin + ear[1]],
+                                        raw.corner_uv[begin + ear[2]]});
+            }
+          }
+          continue;
+        }
       }
       if (folds) {
         ++non_convex;
@@ -223,6 +246,11 @@ Soup triangulate(RawMesh& raw, bool with_uvs, const LoadOptions& options, const 
   if (non_convex > twisted_quads + twisted_polygons) {
     repairs.push_back("ear-clipped " + counted(non_convex - twisted_quads - twisted_polygons,
                                                "non-convex polygon", "non-convex polygons"));
+  }
+  if (with_flat_corner > 0) {
+    repairs.push_back("ear-clipped " + counted(with_flat_corner, "polygon", "polygons") +
+                      " with a corner on a straight side, where a fan would make triangles of no "
+                      "area");
   }
   if (twisted_quads > 0) {
     repairs.push_back("split " + counted(twisted_quads, "twisted quad", "twisted quads") +

@@ -249,6 +249,25 @@ TEST_F(LoadOpenMeshTest, ObjLinesContinuedByABackslash) {
       {"continued_bad.obj", "line 4", "bad vertex reference 'x'"});
 }
 
+// A CAD polygon with a corner in the middle of a side (where a neighbour's corner meets it): a
+// fan from the first corner would make a triangle of no area along that side, which the repair
+// would then have to heal or refuse. It is ear-clipped instead, into triangles of area.
+TEST_F(LoadOpenMeshTest, PolygonWithACornerOnAStraightSideGetsNoFlatTriangle) {
+  // The square 0 0 - 3 3 with two more corners on its bottom side: the fan from corner 0 makes
+  // two triangles of no area along it, each the other's neighbour across its longest edge, so
+  // the repair of flat triangles could not heal them and the file was refused.
+  const fs::path path = write("midpoints.obj",
+                              "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nv 3 3 0\nv 0 3 0\n"
+                              "f 1 2 3 4 5 6\n");
+  const LoadedMesh loaded = load_mesh(path);
+  EXPECT_EQ(loaded.mesh.n_faces(), 4u);
+  for (auto f : loaded.mesh.faces()) EXPECT_GT(loaded.mesh.calc_face_area(f), 0.1);
+  EXPECT_NEAR(surface_area(loaded.mesh), 9.0, 1e-12);
+  EXPECT_TRUE(std::any_of(loaded.repairs.begin(), loaded.repairs.end(), [](const std::string& r) {
+    return r.find("with a corner on a straight side") != std::string::npos;
+  })) << testing::PrintToString(loaded.repairs);
+}
+
 TEST_F(LoadOpenMeshTest, ObjUvSeamKeepsVerticesAndStoresCornerUvs) {
   // Vertex 1 (OBJ 1) has a different UV in the last face that touches it.
   const fs::path path = write("seam.obj",
