@@ -770,14 +770,18 @@ std::pair<double, double> shares_before_and_joined(const std::vector<FlatStrip>&
 // union, which may hold the other half too), of those the one leaving the least slit. Kept only
 // when both halves find a place; then the band is erased from `strips` and the neighbours that took
 // a half are replaced by the unions, their indices (after the erase) going to `changed`. Where no
-// cut places both halves and `in_three`, a half that finds a place is kept and the other half
-// cut in two again (a band whose neighbours turn more than once along it). Otherwise `strips`
-// is left as it was and false returned.
+// cut places both halves and `cuts_after` > 0, a half that finds a place is kept and the other
+// half cut in two again, with one cut fewer after it (a band whose neighbours turn more than once
+// along it: with kMostCutsAfter, into at most four pieces, as a wall round a square hole is cut at
+// three of its corners). Otherwise `strips` is left as it was and false returned.
+constexpr int kMostCutsAfter = 2;
 bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   const MergeOptions& options,
                   const std::function<bool(int, const FlatStrip&)>& keeps_wide,
-                  std::vector<int>& changed, bool in_three = true) {
-  const int most_cuts = in_three ? 48 : 4;  // a half cut again: see "In three" below
+                  std::vector<int>& changed, int cuts_after = kMostCutsAfter) {
+  const bool in_three = cuts_after > 0;
+  // A half cut again tries fewer cuts: see "In three" below.
+  const int most_cuts = cuts_after == kMostCutsAfter ? 48 : 4;
   constexpr int kMostHinges = 12;
   // Checking a half's width rasters a box the size of the half: on a strip of thousands of
   // triangles (a large piece narrow along much of its rim; ChineseDragon's 3,629) the checks
@@ -999,9 +1003,10 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
   }
   // In three, where no cut placed both halves (a band whose neighbours turn twice along it:
   // each half of any cut turns with them somewhere): one half placed, width checked, and the
-  // other cut in two again (trying at most 4 cuts, as it is tried for several first halves).
-  // The cuts where one half may fold, the most even first; at most kMostThirds first halves
-  // placed.
+  // other cut in two again (trying at most 4 cuts, as it is tried for several first halves), and
+  // so on while `cuts_after` lasts: the rest of a band whose neighbours turn three times is cut
+  // in three again. The cuts where one half may fold, the most even first; at most kMostThirds
+  // first halves placed.
   constexpr int kMostThirds = 4;
   int thirds = 0;
   for (auto cut = order_one.begin(); kept_slit < 0 && cut != order_one.end(); ++cut) {
@@ -1018,7 +1023,8 @@ bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
         return keeps_wide(around[i], joined);
       };
       std::vector<int> took_rest;
-      if (!hinge_in_two(trial, n, min_width, options, keeps_wide_in_trial, took_rest, false))
+      if (!hinge_in_two(trial, n, min_width, options, keeps_wide_in_trial, took_rest,
+                        cuts_after - 1))
         continue;
       for (int i : took_rest) took[i] = true;
       kept = std::move(trial), kept_took = std::move(took), kept_slit = 0;

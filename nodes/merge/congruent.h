@@ -84,16 +84,16 @@ std::vector<FlatStrip> drop_double_covered_triangles(std::vector<FlatStrip> stri
 /// triangle next to its siblings only waits for one of them to be taken. That is kept only when
 /// every triangle finds a place and at most one edge between two of its triangles is opened (each
 /// one a new seam to glue, often tiny and in a notch without room for a tab). A small strip that
-/// cannot be taken apart (more than 64 triangles, or more edges opened) is cut in two (or three)
-/// across its inner edges, each part hinged onto a neighbour (join_narrow_strips' cut, with no
-/// neighbour getting narrower than `min_width` over more than options.narrow_join_share of its area
-/// or than it was; `min_width` 0: not tried). One that cannot be cut either grows instead: it takes
-/// its neighbours' triangles that share an edge with it, one at a time (of those that find a place,
-/// the one leaving it most compact: the least squared perimeter per area in the plane), each folded
-/// out of it over the edges it shares, until it reaches `min_area`; a triangle takes with it what
-/// its neighbour held only through it (the end of a ruled strip beyond it), so the neighbour stays
-/// one piece. It is taken only where it lands on no other triangle of the strip, every edge shared
-/// welds (no slit) and the neighbour keeps at least `min_area`. It grows until it reaches
+/// cannot be taken apart (more than 64 triangles, or more edges opened) is cut in two (or three, or
+/// four) across its inner edges, each part hinged onto a neighbour (join_narrow_strips' cut, with
+/// no neighbour getting narrower than `min_width` over more than options.narrow_join_share of its
+/// area or than it was; `min_width` 0: not tried). One that cannot be cut either grows instead: it
+/// takes its neighbours' triangles that share an edge with it, one at a time (of those that find a
+/// place, the one leaving it most compact: the least squared perimeter per area in the plane), each
+/// folded out of it over the edges it shares, until it reaches `min_area`; a triangle takes with it
+/// what its neighbour held only through it (the end of a ruled strip beyond it), so the neighbour
+/// stays one piece. It is taken only where it lands on no other triangle of the strip, every edge
+/// shared welds (no slit) and the neighbour keeps at least `min_area`. It grows until it reaches
 /// `min_area` and neither it nor a neighbour it took from is narrower than `min_width` over more
 /// than options.narrow_join_share of its area (or than before; `min_width` 0: not checked): past
 /// `min_area` it goes on growing until that holds, giving up once 16 triangles in a row bring no
@@ -127,7 +127,9 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// (or than `narrow_share`), the cut leaving the least slit. Where no cut places both halves
 /// (its neighbours turn twice along it, so each half of any cut turns with them somewhere), it
 /// is cut in three: one half placed and the other cut in two
-/// again, at most 4 first halves and 4 cuts of each second half tried. A strip none takes is passed
+/// again, at most 4 first halves and 4 cuts of each second half tried; and where that fails (its
+/// neighbours turn three times, as the wall round a square hole does), in four, the second half
+/// cut in three in the same way. A strip none takes is passed
 /// over until a join makes a union beside it (new edges to fold over, a neighbour less
 /// narrow), then tried again; those left after that stay as they are. Each of those still narrow
 /// then grows as join_small_strips grows a crumb (its neighbours' triangles beside it, the one

@@ -785,17 +785,31 @@ TEST(JoinNarrowStrips, BandNoHingeTakesWholeIsCutInTwoAndEachHalfFoldedOut) {
 // (4..8, 0..4), and its wall along the notch's three sides, from (8, 0) by (8, 4) and (4, 4) to
 // (4, 0), unrolled straight (12 long). The plates are triangulated by hand (the U is not
 // star-shaped); the ceiling is laid out mirrored, as in l_prism.
-LPrism u_prism(double h) {
-  const std::vector<Vec3> bottom = {{8, 0, 0}, {8, 4, 0}, {4, 4, 0}, {4, 0, 0}};
+// A prism `h` high whose wall stands on `bottom` (walked with the wall on its left), unrolled
+// straight, and whose plates are `triangles` over `points` (add_plates).
+LPrism walled_prism(const std::vector<Vec3>& bottom, const std::vector<Vec3>& points,
+                    const std::vector<Triangle>& triangles, double h) {
   LPrism prism;
   prism.wall = straight_wall(bottom, h);
-  // A, B, C, D, E, F, G, H, and I, J on the plate's sides.
-  const std::vector<Vec3> points = {{0, 0, 0},  {4, 0, 0},  {4, 4, 0}, {8, 4, 0}, {8, 0, 0},
-                                    {12, 0, 0}, {12, 8, 0}, {0, 8, 0}, {0, 4, 0}, {12, 4, 0}};
-  add_plates(
-      prism, points,
-      {{0, 1, 2}, {0, 2, 8}, {7, 8, 2}, {7, 2, 3}, {7, 3, 9}, {7, 9, 6}, {3, 4, 5}, {3, 5, 9}}, h);
+  add_plates(prism, points, triangles, h);
   return prism;
+}
+
+LPrism u_prism(double h) {
+  // A, B, C, D, E, F, G, H, and I, J on the plate's sides.
+  return walled_prism(
+      {{8, 0, 0}, {8, 4, 0}, {4, 4, 0}, {4, 0, 0}},
+      {{0, 0, 0},
+       {4, 0, 0},
+       {4, 4, 0},
+       {8, 4, 0},
+       {8, 0, 0},
+       {12, 0, 0},
+       {12, 8, 0},
+       {0, 8, 0},
+       {0, 4, 0},
+       {12, 4, 0}},
+      {{0, 1, 2}, {0, 2, 8}, {7, 8, 2}, {7, 2, 3}, {7, 3, 9}, {7, 9, 6}, {3, 4, 5}, {3, 5, 9}}, h);
 }
 
 // The U prism 0.2 high. Cut anywhere in two, the wall leaves a half that turns a corner of the
@@ -811,6 +825,30 @@ TEST(JoinNarrowStrips, BandWhoseNeighboursTurnTwiceIsCutInThree) {
   std::vector<std::size_t> sizes = {joined[0].triangles.size(), joined[1].triangles.size()};
   std::sort(sizes.begin(), sizes.end());
   EXPECT_EQ(sizes, (std::vector<std::size_t>{10, 12}));
+}
+
+// A plate 12 x 8 with a 4 x 4 hole at (4..8, 2..6), `h` thick: floor, ceiling, and the wall
+// round the hole, a closed band opened at the hole's corner (8, 2) (a seam with itself),
+// unrolled straight (16 long). The plates are triangulated by hand round the hole.
+LPrism holed_prism(double h) {
+  // A, B, C, D the plate's corners, E, F, G, H the hole's.
+  return walled_prism(
+      {{8, 2, 0}, {8, 6, 0}, {4, 6, 0}, {4, 2, 0}, {8, 2, 0}},
+      {{0, 0, 0}, {12, 0, 0}, {12, 8, 0}, {0, 8, 0}, {4, 2, 0}, {8, 2, 0}, {8, 6, 0}, {4, 6, 0}},
+      {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}}, h);
+}
+
+// The holed prism 0.2 high. Any piece of the wall that turns a corner of the hole, folded out of
+// either plate, runs on past the corner into the plate; so the band is cut at the three corners
+// it still turns, into four sides, and each side folds into the hole, neighbouring sides onto
+// different plates (on one plate they would overlap in the hole's corner). Cut in three at
+// most, one piece turns a corner, and the band stayed a narrow piece of its own.
+TEST(JoinNarrowStrips, BandRoundAHoleIsCutInFour) {
+  const auto joined = wall_folded_out(holed_prism(0.2));
+  ASSERT_EQ(joined.size(), 2u);
+  EXPECT_EQ(triangle_count(joined), 24u);  // 8 on each plate and the wall's 8
+  // Each plate takes two opposite sides (4 triangles).
+  for (const FlatStrip& strip : joined) EXPECT_EQ(strip.triangles.size(), 12u) << strip.id;
 }
 
 // The same prism with its wall in 160 triangles (40 along each side of the notch), and a
