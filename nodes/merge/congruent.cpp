@@ -772,16 +772,18 @@ std::pair<double, double> shares_before_and_joined(const std::vector<FlatStrip>&
 // a half are replaced by the unions, their indices (after the erase) going to `changed`. Where no
 // cut places both halves and `cuts_after` > 0, a half that finds a place is kept and the other
 // half cut in two again, with one cut fewer after it (a band whose neighbours turn more than once
-// along it: with kMostCutsAfter, into at most four pieces, as a wall round a square hole is cut at
-// three of its corners). Otherwise `strips` is left as it was and false returned.
-constexpr int kMostCutsAfter = 2;
+// along it: into at most options.most_band_pieces, as a wall round a square hole is cut at
+// three of its corners into four). Otherwise `strips` is left as it was and false returned.
 bool hinge_in_two(std::vector<FlatStrip>& strips, int band, double min_width,
                   const MergeOptions& options,
                   const std::function<bool(int, const FlatStrip&)>& keeps_wide,
-                  std::vector<int>& changed, int cuts_after = kMostCutsAfter) {
+                  std::vector<int>& changed, int cuts_after = -1) {
+  const int most_cuts_after = std::max(0, options.most_band_pieces - 2);
+  const bool whole_band = cuts_after < 0;
+  if (whole_band) cuts_after = most_cuts_after;
   const bool in_three = cuts_after > 0;
   // A half cut again tries fewer cuts: see "In three" below.
-  const int most_cuts = cuts_after == kMostCutsAfter ? 48 : 4;
+  const int most_cuts = whole_band ? 48 : 4;
   constexpr int kMostHinges = 12;
   // Checking a half's width rasters a box the size of the half: on a strip of thousands of
   // triangles (a large piece narrow along much of its rim; ChineseDragon's 3,629) the checks

@@ -28,6 +28,11 @@ struct MergeOptions {
   /// but small piece, one more to cut and glue) is hinged onto a neighbour where the union
   /// lies flat (hinge_modest_strips); <= 1: never.
   double modest_join_factor = 2.0;
+  /// A band no hinge takes whole is cut into at most this many pieces, each hinged onto a
+  /// neighbour (join_narrow_strips): 2 to 4. The merge node refines in 3D against a merge that
+  /// cuts in three at most (a join in 3D leaves no seam, a band cut in four leaves many), then
+  /// merges with the full depth where pieces are still left short.
+  int most_band_pieces = 4;
 };
 
 /// Joins flat strips of one model whose shared boundaries have congruent flat images.
@@ -128,7 +133,8 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
 /// (its neighbours turn twice along it, so each half of any cut turns with them somewhere), it
 /// is cut in three: one half placed and the other cut in two
 /// again, at most 4 first halves and 4 cuts of each second half tried; and where that fails (its
-/// neighbours turn three times, as the wall round a square hole does), in four, the second half
+/// neighbours turn three times, as the wall round a square hole does), in four (at most
+/// options.most_band_pieces), the second half
 /// cut in three in the same way. A strip none takes is passed
 /// over until a join makes a union beside it (new edges to fold over, a neighbour less
 /// narrow), then tried again; those left after that stay as they are. Each of those still narrow

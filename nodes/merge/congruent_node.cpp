@@ -154,7 +154,7 @@ int shortfalls(const std::vector<Short>& shorts, double narrow_bound) {
 // pieces are left too small or too narrow. At most kMostRejoins unions per model.
 constexpr int kMostRejoins = 8;
 
-Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>> unfolded, Merged merged,
+Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded, Merged merged,
                     ModelRun& model, const MergeOptions& options, const RefineOptions& refine) {
   const PieceLimits limits = model.piece_limits();
   const double scale = model.mm_per_unit();
@@ -265,9 +265,21 @@ void register_merge_congruent(Registry& registry) {
                   return make_body([options, refine](const Envelope& in, Emitter& out) {
                     const PieceLimits limits = in.model->piece_limits();
                     auto unfolded = in.get<Gathered>().as<UnfoldedStrip>();
-                    Merged merged = merge_model(unfolded, options, limits);
-                    merged = rejoin_in_3d(std::move(unfolded), std::move(merged), *in.model,
-                                          options, refine);
+                    // Joins in 3D are tried against a merge that cuts a band in three at
+                    // most: a band cut in four, each piece hinged onto a neighbour, leaves
+                    // many seams of a piece with itself where a join in 3D leaves none
+                    // (ChineseDragon-10kv: one piece with 101 such seams instead of 51). The
+                    // full depth is then used where pieces are still left short.
+                    MergeOptions shallow = options;
+                    shallow.most_band_pieces = std::min(options.most_band_pieces, 3);
+                    Merged merged = merge_model(unfolded, shallow, limits);
+                    merged = rejoin_in_3d(unfolded, std::move(merged), *in.model, shallow, refine);
+                    if (options.most_band_pieces > shallow.most_band_pieces &&
+                        shortfalls(short_pieces(merged, limits, options.narrow_join_share,
+                                                in.model->mm_per_unit()),
+                                   options.narrow_join_share) > 0) {
+                      merged = merge_model(unfolded, options, limits);
+                    }
                     if (merged.twice > 0) {
                       const std::string text = "dropped " + std::to_string(merged.twice) +
                                                (merged.twice == 1 ? " triangle" : " triangles") +

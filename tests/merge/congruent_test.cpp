@@ -849,6 +849,15 @@ TEST(JoinNarrowStrips, BandRoundAHoleIsCutInFour) {
   EXPECT_EQ(triangle_count(joined), 24u);  // 8 on each plate and the wall's 8
   // Each plate takes two opposite sides (4 triangles).
   for (const FlatStrip& strip : joined) EXPECT_EQ(strip.triangles.size(), 12u) << strip.id;
+
+  // Cut in three at most (the merge node's depth before it refines in 3D), the wall stays a
+  // piece of its own.
+  const LPrism prism = holed_prism(0.2);
+  MergeOptions three;
+  three.most_band_pieces = 3;
+  const auto kept = join_narrow_strips(merge_congruent({prism.floor, prism.wall, prism.ceiling}),
+                                       0.5, 0.25, three);
+  EXPECT_EQ(kept.size(), 3u);
 }
 
 // The same prism with its wall in 160 triangles (40 along each side of the notch), and a
