@@ -215,8 +215,10 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
       std::int64_t index = 0;
       std::string_view token = next_token(tokens);
       // The format is free: a face's indices may go on over the next lines (libigl writes
-      // one value a line).
-      while (token.empty() && next_off_line(in, line, scan.off_comments)) {
+      // one value a line). Only where the pre-scan reads the file itself: OpenMesh's reader
+      // takes a face from its line, and read on, a count from the next was once taken for a
+      // face of four billion corners.
+      while (token.empty() && native && next_off_line(in, line, scan.off_comments)) {
         tokens = line;
         token = next_token(tokens);
       }

@@ -359,6 +359,21 @@ TEST_F(LoadOpenMeshTest, OffFaceIndicesOverSeveralLines) {
   cut.resize(cut.rfind("3 1 2 3\n"));
   cut += "3 1 2\n";
   expect_error<InvalidInputException>(write("short.off", cut), {"face 3", "declares 3"});
+  // Not where OpenMesh's reader reads the file (a prefix such as ST): it takes a face from its
+  // line, and read on, a fuzzed file's face count from the next line asked for four billion
+  // corners. Such a face is refused, naming its line.
+  std::string st = "N" + tetra_off();
+  std::size_t at = st.find('\n', st.find('\n') + 1);  // the end of the counts line
+  for (int vertex = 0; vertex < 4; ++vertex) {        // a normal after each position
+    at = st.find('\n', at + 1);
+    st.insert(at, " 0 0 1");
+    at += 6;
+  }
+  ASSERT_EQ(load_mesh(write("normals.off", st)).mesh.n_faces(), 4u);
+  st.replace(st.find("3 0 1 3\n"), 8, "3 0 \n1 3\n");
+  expect_error<InvalidInputException>(
+      write("normals_lines.off", st),
+      {"normals_lines.off", "face 1", "declares 3 vertices but lists 1"});
 }
 
 TEST_F(LoadOpenMeshTest, OffBinary) {
