@@ -101,4 +101,9 @@ float decode_float_little_endian(const unsigned char* bytes) {
   return value;
 }
 
+bool ends_in_backslash(std::string_view line) {
+  const std::string_view body = trim(line);
+  return !body.empty() && body.back() == '\\';
+}
+
 }  // namespace papercraft::load_internal

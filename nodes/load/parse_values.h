@@ -11,6 +11,8 @@ namespace papercraft::load_internal {
 bool is_space(char c);
 /// The text without leading and trailing whitespace.
 std::string_view trim(std::string_view text);
+/// Whether the line, trimmed, ends in a backslash (an OBJ statement going on on the next line).
+bool ends_in_backslash(std::string_view line);
 /// Takes the first whitespace-separated token off `rest` (empty when none is left).
 std::string_view next_token(std::string_view& rest);
 /// Whether `text` starts with `prefix`, ignoring ASCII case.

@@ -11,14 +11,6 @@
 #include "nodes/load/prescan.h"
 
 namespace papercraft::load_internal {
-namespace {
-
-bool ends_in_backslash(std::string_view line) {
-  const std::string_view body = trim(line);
-  return !body.empty() && body.back() == '\\';
-}
-
-}  // namespace
 
 Prescan prescan_obj(FileScanner& in, const std::string& file, const std::filesystem::path& path,
                     const LoadOptions& options) {

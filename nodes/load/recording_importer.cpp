@@ -195,8 +195,8 @@ std::string clean_obj(const std::filesystem::path& path, const std::string& file
   std::string out;
   std::string line;
   while (std::getline(in, line)) {
-    const std::string_view content = trim(line);
-    if (!content.empty() && content.back() == '\\') {
+    if (ends_in_backslash(line)) {
+      const std::string_view content = trim(line);
       out.append(content.substr(0, content.size() - 1));
       out.push_back(' ');
     } else {

@@ -151,7 +151,8 @@ int shortfalls(const std::vector<Short>& shorts, double narrow_bound) {
 // tolerance after all: the cut that parted them was made higher up, for a larger part that was
 // not. Such a union, refined and certified as the graph refines a part, that unfolds in one
 // piece replaces the two strips, and the model is merged again; the change is kept when fewer
-// pieces are left too small or too narrow. At most kMostRejoins unions per model.
+// pieces are left too small or too narrow. At most kMostRejoins unions per model. `unfolded`
+// is left as the strips of the merge returned (the unions in place of the parts they join).
 constexpr int kMostRejoins = 8;
 
 Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded, Merged merged,
