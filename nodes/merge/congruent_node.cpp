@@ -270,16 +270,25 @@ void register_merge_congruent(Registry& registry) {
                     // most: a band cut in four, each piece hinged onto a neighbour, leaves
                     // many seams of a piece with itself where a join in 3D leaves none
                     // (ChineseDragon-10kv: one piece with 101 such seams instead of 51). The
-                    // full depth is then used where pieces are still left short.
+                    // full depth is then used where pieces are still left short, and kept
+                    // unless it leaves more of them short.
                     MergeOptions shallow = options;
                     shallow.most_band_pieces = std::min(options.most_band_pieces, 3);
                     Merged merged = merge_model(unfolded, shallow, limits);
                     merged = rejoin_in_3d(unfolded, std::move(merged), *in.model, shallow, refine);
-                    if (options.most_band_pieces > shallow.most_band_pieces &&
-                        shortfalls(short_pieces(merged, limits, options.narrow_join_share,
-                                                in.model->mm_per_unit()),
-                                   options.narrow_join_share) > 0) {
-                      merged = merge_model(unfolded, options, limits);
+                    const auto short_of = [&](const Merged& m) {
+                      return shortfalls(short_pieces(m, limits, options.narrow_join_share,
+                                                     in.model->mm_per_unit()),
+                                        options.narrow_join_share);
+                    };
+                    const int shallow_short = short_of(merged);
+                    if (options.most_band_pieces > shallow.most_band_pieces && shallow_short > 0) {
+                      Merged deep = merge_model(unfolded, options, limits);
+                      const int deep_short = short_of(deep);
+                      spdlog::debug("{}: pieces left short cutting bands in {}: {}, in {}: {}",
+                                    in.model->name, shallow.most_band_pieces, shallow_short,
+                                    options.most_band_pieces, deep_short);
+                      if (deep_short <= shallow_short) merged = std::move(deep);
                     }
                     if (merged.twice > 0) {
                       const std::string text = "dropped " + std::to_string(merged.twice) +
