@@ -14,20 +14,26 @@
 //
 //   piece_quality OUT/eight OUT/cactus ...            # model folders
 //   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 --sliver-mm2 100 OUT/*/
+//   piece_quality --list OUT/*/ 2>&1 >/dev/null | grep short   # each narrow or small piece, on
+//                                     # stderr: area, narrow share, neighbours, its whole part
 //
 // Exit status 0 (findings are data), 2 for a bad command line or unreadable folder.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/flat_boundary.h"
+#include "support/flat_strips_json.h"
 #include "support/pattern_checks.h"
 
 namespace {
@@ -64,7 +70,10 @@ int count_notes(const nlohmann::json& report, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  using papercraft::BoundaryEdge;
+  using papercraft::FlatStrip;
   double narrow_mm = 3.0, narrow_share = 0.25, small_mm2 = 100.0, sliver_mm2 = 100.0;
+  bool list = false;
   std::vector<std::filesystem::path> models;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -83,6 +92,8 @@ int main(int argc, char** argv) {
       small_mm2 = value();
     else if (arg == "--sliver-mm2")
       sliver_mm2 = value();
+    else if (arg == "--list")
+      list = true;
     else if (arg.rfind("--", 0) == 0) {
       std::fprintf(stderr, "unknown option %s\n", arg.c_str());
       return 2;
@@ -92,7 +103,7 @@ int main(int argc, char** argv) {
   if (models.empty()) {
     std::fprintf(stderr,
                  "usage: piece_quality [--narrow-mm 3] [--narrow-share 0.25] "
-                 "[--small-mm2 100] [--sliver-mm2 100] MODEL_DIR...\n");
+                 "[--small-mm2 100] [--sliver-mm2 100] [--list] MODEL_DIR...\n");
     return 2;
   }
   std::printf(
@@ -143,6 +154,29 @@ int main(int argc, char** argv) {
         row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8], row[9], row[10],
         row[11], row[12], row[13], row[14], row[15]);
     for (const auto& p : pieces.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
+    if (list) {
+      std::map<long, FlatStrip> by_id;
+      for (FlatStrip& strip : papercraft::testing::read_flat_strips(strips))
+        by_id[strip.id] = std::move(strip);
+      for (const auto& p : pieces.shorts) {
+        std::ostringstream saddles;  // neighbours no hinge takes it onto whole
+        const FlatStrip& strip = by_id.at(p.id);
+        std::set<long> seen;
+        for (const BoundaryEdge& edge : strip.boundary) {
+          const long n = edge.neighbour_strip;
+          if (n < 0 || n == p.id || !seen.insert(n).second || !by_id.count(n)) continue;
+          const double widest = papercraft::widest_corner_round_a_seam_vertex(strip, by_id.at(n));
+          if (widest > 360.5) saddles << " " << n << " (" << std::lround(widest) << " deg)";
+        }
+        std::fprintf(
+            stderr,
+            "%s: short strip %ld: %.0f mm^2, %.0f%% narrower than %g mm, glued to %d "
+            "other strips; its part of the model: %.0f mm^2 in %d strips%s%s\n",
+            dir.c_str(), p.id, p.area_mm2, 100.0 * p.narrow_share, narrow_mm, p.neighbours,
+            p.part_mm2, p.part_strips,
+            saddles.str().empty() ? "" : "; seam round a saddle with:", saddles.str().c_str());
+      }
+    }
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }
   std::printf(

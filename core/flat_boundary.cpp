@@ -1,8 +1,10 @@
 #include "core/flat_boundary.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <utility>
 
 namespace papercraft {
@@ -77,6 +79,49 @@ bool weld_keeps_lengths(const std::vector<Vec3>& points3d, const std::vector<Tri
     }
   }
   return true;
+}
+
+double widest_corner_round_a_seam_vertex(const FlatStrip& a, const FlatStrip& b) {
+  using Point = std::array<double, 3>;
+  if (a.id == b.id) return 0.0;
+  // The strip's vertices (by index: a strip may hold a point twice, at the two sides of a slit)
+  // on two of its seam edges with `other`, by their 3D point.
+  const auto inner = [](const FlatStrip& strip, int other) {
+    std::map<int, int> ends;
+    for (const BoundaryEdge& e : strip.boundary)
+      if (e.kind == EdgeKind::Seam && e.neighbour_strip == other) ++ends[e.v0], ++ends[e.v1];
+    std::map<Point, std::vector<int>> by_point;
+    for (const auto& [v, count] : ends)
+      if (count >= 2) {
+        const Vec3& p = strip.vertices3d[v];
+        by_point[{p.x(), p.y(), p.z()}].push_back(v);
+      }
+    return by_point;
+  };
+  // The corners of the strip's triangles at vertex v, in radians.
+  const auto corner = [](const FlatStrip& strip, int v) {
+    double sum = 0.0;
+    for (const Triangle& t : strip.triangles)
+      for (int k = 0; k < 3; ++k) {
+        if (t[k] != v) continue;
+        const Vec2 u = strip.vertices2d[t[(k + 1) % 3]] - strip.vertices2d[t[k]];
+        const Vec2 w = strip.vertices2d[t[(k + 2) % 3]] - strip.vertices2d[t[k]];
+        sum += std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)));
+      }
+    return sum;
+  };
+  const auto in_b = inner(b, a.id);
+  double widest = 0.0;
+  for (const auto& [point, a_vertices] : inner(a, b.id)) {
+    auto it = in_b.find(point);
+    if (it == in_b.end()) continue;
+    // Where either holds the point twice, the pair of copies with the least sum.
+    double least = std::numeric_limits<double>::infinity();
+    for (int u : a_vertices)
+      for (int v : it->second) least = std::min(least, corner(a, u) + corner(b, v));
+    widest = std::max(widest, least);
+  }
+  return widest * 180.0 / M_PI;
 }
 
 double flat_area(const FlatStrip& strip) {

@@ -34,6 +34,15 @@ bool weld_keeps_lengths(const std::vector<Vec3>& points3d, const std::vector<Tri
 /// The area of a flat strip's triangles in the plane (each counted by its absolute value).
 double flat_area(const FlatStrip& strip);
 
+/// Round each vertex inside a seam chain that `a` shares with `b` (a vertex of a on two of its
+/// seam edges whose neighbour is b's id, and of b on two of its seam edges to a; matched by
+/// their exact 3D points, and where a strip holds the point twice, its copy with the least
+/// corner), the corners of a's and b's triangles there summed, in degrees: the largest such
+/// sum, 0 where the chains have no inner vertex. Over 360, a hinge along a chain through that
+/// vertex lays the two over each other round it (the surface is a saddle there): no join in the
+/// plane along that chain takes one onto the other whole.
+double widest_corner_round_a_seam_vertex(const FlatStrip& a, const FlatStrip& b);
+
 /// The first triangle that turns clockwise in `points`, i.e. whose cross product is below
 /// -`relative` times its longest edge squared, or -1 if none does. Not judged: triangles
 /// with a repeated index, and triangles whose longest edge is under 1e-6 of the bounding-box

@@ -55,10 +55,37 @@ bool glued_to_another(const FlatStrip& strip) {
   });
 }
 
+// Where every seam of a piece with another runs round a saddle of the surface (the two pieces'
+// corners round a vertex of it summing to over 360 degrees), folding it flat onto any
+// neighbour along a seam lays the two over each other there: why no hinge took it whole, said
+// with the widest such vertex. Empty where some neighbour's seam has no such vertex.
+std::string saddle_reason(const FlatStrip& strip, const std::vector<FlatStrip>& strips) {
+  std::set<int> neighbours;
+  for (const BoundaryEdge& e : strip.boundary)
+    if (e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id)
+      neighbours.insert(e.neighbour_strip);
+  int widest_with = -1;
+  double widest = 0.0;
+  for (int id : neighbours) {
+    auto it = std::find_if(strips.begin(), strips.end(),
+                           [&](const FlatStrip& other) { return other.id == id; });
+    if (it == strips.end()) return "";
+    const double degrees = widest_corner_round_a_seam_vertex(strip, *it);
+    if (!(degrees > 360.5)) return "";
+    if (degrees > widest) widest = degrees, widest_with = id;
+  }
+  if (widest_with < 0) return "";
+  return ": each seam it has runs round a saddle of the surface, where folded flat onto the "
+         "neighbour it would lie over it (with flat strip " +
+         std::to_string(widest_with) + ", the two pieces' corners round one vertex sum to " +
+         std::to_string(std::lround(widest)) + " degrees)";
+}
+
 // The pieces a person cannot handle, named in report.json and on stderr: those too small that
 // no neighbour takes, and those narrower than min_width_mm over more than their tips. A piece
 // glued to no other is a whole separate part of the model (a tooth, a claw, a button): no join
-// can grow or widen it, only a larger print scale, and the note says so.
+// can grow or widen it, only a larger print scale, and the note says so. One whose every seam
+// runs round a saddle (saddle_reason) is said to be so.
 void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& strips,
                              const std::vector<int>& small) {
   const double scale = model.mm_per_unit();
@@ -67,12 +94,12 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
     const bool alone = !glued_to_another(strip);
     const std::string why = alone ? ": it is a separate part of the model by itself (a larger "
                                     "--height or --scale prints it larger)"
-                                  : "";
+                                  : saddle_reason(strip, strips);
     if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
       const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
                                std::to_string(std::lround(flat_area(strip) * scale * scale)) +
                                " mm^2, below min_area_mm2" +
-                               (alone ? why : ", and no neighbour takes it");
+                               (alone ? why : ", and no neighbour takes it" + why);
       model.note(text);
       spdlog::warn("{}: {}", model.name, text);
     }

@@ -1080,5 +1080,54 @@ TEST(DropDoubleCoveredTriangles, AStripTheDroppedTrianglesCrossIsSplitIntoItsPie
   for (const auto& [segment, edges] : seam_edges_by_segment(merged)) EXPECT_EQ(edges, 2);
 }
 
+// A fan of triangles round a vertex: its centre and the 3D ends of its spokes (`spokes`, shared
+// with the fan beside it), laid out in the plane with its corners `degrees` wide. Its first and
+// last spokes are seams with strip `neighbour` (where `seam_last` for the last), its rim open.
+FlatStrip fan(int id, int neighbour, const std::vector<Vec3>& spokes,
+              const std::vector<double>& degrees, bool seam_last = true) {
+  FlatStrip strip;
+  strip.id = id;
+  strip.vertices3d.push_back(Vec3::Zero());
+  strip.vertices2d.push_back(Vec2::Zero());
+  double angle = 0.0;
+  for (std::size_t k = 0; k < spokes.size(); ++k) {
+    if (k > 0) angle += degrees[k - 1] * M_PI / 180.0;
+    strip.vertices3d.push_back(spokes[k]);
+    strip.vertices2d.emplace_back(std::cos(angle), std::sin(angle));
+  }
+  const int n = static_cast<int>(spokes.size());
+  for (int k = 1; k < n; ++k) strip.triangles.push_back({0, k, k + 1});
+  strip.boundary = flat_boundary(strip.triangles);
+  for (BoundaryEdge& e : strip.boundary) {
+    const bool first = e.v0 == 0 && e.v1 == 1, last = e.v0 == n && e.v1 == 0;
+    e.kind = first || (last && seam_last) ? EdgeKind::Seam : EdgeKind::Open;
+    if (e.kind == EdgeKind::Seam) e.neighbour_strip = neighbour;
+  }
+  return strip;
+}
+
+// Two fans holding all of the surface round a vertex, each glued to the other along both its
+// spokes there: their corners round it sum to 360 degrees where the surface is flat there and
+// to more where it is a saddle (no hinge along the seam lays them flat together), and a seam of
+// one edge has no vertex inside it.
+TEST(WidestCornerRoundASeamVertex, SumsBothPiecesCornersRoundTheVertexInsideTheirSeam) {
+  std::vector<Vec3> spokes;
+  for (int k = 0; k < 6; ++k)
+    spokes.emplace_back(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0.1 * (k % 2));
+  const std::vector<Vec3> first(spokes.begin(), spokes.begin() + 4);
+  const std::vector<Vec3> second = {spokes[3], spokes[4], spokes[5], spokes[0]};
+  const FlatStrip a = fan(1, 2, first, {50, 50, 50});
+  EXPECT_NEAR(widest_corner_round_a_seam_vertex(a, fan(2, 1, second, {70, 70, 70})), 360.0, 1e-9);
+  const FlatStrip saddle = fan(2, 1, second, {80, 80, 70});
+  EXPECT_NEAR(widest_corner_round_a_seam_vertex(a, saddle), 380.0, 1e-9);
+  EXPECT_NEAR(widest_corner_round_a_seam_vertex(saddle, a), 380.0, 1e-9);
+  // Glued along one spoke only: the seam is one edge, with no vertex inside it.
+  EXPECT_EQ(widest_corner_round_a_seam_vertex(fan(1, 2, first, {50, 50, 50}, false), saddle), 0.0);
+  // Not a seam with that strip.
+  FlatStrip other = saddle;
+  other.id = 3;
+  EXPECT_EQ(widest_corner_round_a_seam_vertex(a, other), 0.0);
+}
+
 }  // namespace
 }  // namespace papercraft

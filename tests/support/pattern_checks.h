@@ -204,6 +204,16 @@ struct PieceFindings {
   double smallest_mm2 = 0.0;
   double most_narrow_share = 0.0;
   std::vector<std::string> problems;
+  /// Every piece counted narrow or small, with what decides whether a join could help it.
+  struct Short {
+    long id = 0;
+    double area_mm2 = 0.0;
+    double narrow_share = 0.0;  // of its area narrower than `narrow_mm`
+    int neighbours = 0;         // other strips it has a seam with
+    double part_mm2 = 0.0;      // its whole piece of the model (strips joined by seams)
+    int part_strips = 0;
+  };
+  std::vector<Short> shorts;
 };
 
 /// Sizes on paper of the flat strips (model units times `mm_per_unit`).
@@ -221,7 +231,7 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
       auto it = index_of.find(edge.value("neighbour", -1L));
       if (it != index_of.end()) joined.unite(i, it->second);
     }
-  std::vector<double> areas(strips.size(), 0.0);
+  std::vector<double> areas(strips.size(), 0.0), shares(strips.size(), 0.0);
   std::vector<bool> narrow(strips.size(), false);
   for (std::size_t s = 0; s < strips.size(); ++s) {
     const auto& strip = strips[s];
@@ -242,6 +252,7 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
     NarrowRaster raster;
     const double sliver = largest_narrow_region(points, triangles, narrow_mm, {}, &raster);
     const double share = raster.fraction();
+    shares[s] = share;
     findings.most_narrow_share = std::max(findings.most_narrow_share, share);
     const std::string id = strip.at("id").dump();
     if (share > narrow_share) {
@@ -271,6 +282,16 @@ inline PieceFindings check_pieces(const nlohmann::json& strips, double mm_per_un
   for (std::size_t s = 0; s < strips.size(); ++s) {
     findings.small_alone += areas[s] < small_mm2 && component_area[joined.find(s)] < small_mm2;
     findings.narrow_alone += narrow[s] && component_strips[joined.find(s)] == 1;
+    if (narrow[s] || areas[s] < small_mm2) {
+      std::set<long> others;
+      const long id = strips[s].at("id").get<long>();
+      for (const auto& edge : strips[s].at("boundary")) {
+        const long neighbour = edge.value("neighbour", -1L);
+        if (neighbour >= 0 && neighbour != id) others.insert(neighbour);
+      }
+      findings.shorts.push_back({id, areas[s], shares[s], static_cast<int>(others.size()),
+                                 component_area[joined.find(s)], component_strips[joined.find(s)]});
+    }
   }
   if (findings.pieces == 0) findings.smallest_mm2 = 0.0;
   return findings;
