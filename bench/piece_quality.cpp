@@ -14,8 +14,11 @@
 //
 //   piece_quality OUT/eight OUT/cactus ...            # model folders
 //   piece_quality --narrow-mm 3 --narrow-share 0.25 --small-mm2 100 --sliver-mm2 100 OUT/*/
-//   piece_quality --list OUT/*/ 2>&1 >/dev/null | grep short   # each narrow or small piece, on
-//                                     # stderr: area, narrow share, neighbours, its whole part
+//   piece_quality --list OUT/*/ 2>&1 >/dev/null   # each narrow or small piece, on stderr:
+//     its area, narrow share, neighbours and whole part; the neighbours whose seam with it runs
+//     round a saddle of the surface (widest_corner_round_a_seam_vertex over 360 degrees), and
+//     those it lies flat beside folded out of them over one shared edge (folds_flat_onto: a
+//     hinge in the plane could take it); last, how many of those glued to another could.
 //
 // Exit status 0 (findings are data), 2 for a bad command line or unreadable folder.
 
@@ -113,6 +116,7 @@ int main(int argc, char** argv) {
   std::printf(
       "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   long total[16] = {};
+  long beside = 0, hinged = 0;  // with --list: short pieces glued to another; of them, foldable
   for (const auto& dir : models) {
     nlohmann::json strips, report;
     try {
@@ -160,6 +164,7 @@ int main(int argc, char** argv) {
         by_id[strip.id] = std::move(strip);
       for (const auto& p : pieces.shorts) {
         std::ostringstream saddles;  // neighbours no hinge takes it onto whole
+        std::ostringstream folds;    // neighbours a hinge over one edge lays it flat onto
         const FlatStrip& strip = by_id.at(p.id);
         std::set<long> seen;
         for (const BoundaryEdge& edge : strip.boundary) {
@@ -167,18 +172,32 @@ int main(int argc, char** argv) {
           if (n < 0 || n == p.id || !seen.insert(n).second || !by_id.count(n)) continue;
           const double widest = papercraft::widest_corner_round_a_seam_vertex(strip, by_id.at(n));
           if (widest > 360.5) saddles << " " << n << " (" << std::lround(widest) << " deg)";
+          if (papercraft::folds_flat_onto(strip, by_id.at(n))) folds << " " << n;
+        }
+        if (p.neighbours > 0) {
+          ++beside;
+          hinged += !folds.str().empty();
         }
         std::fprintf(
             stderr,
             "%s: short strip %ld: %.0f mm^2, %.0f%% narrower than %g mm, glued to %d "
-            "other strips; its part of the model: %.0f mm^2 in %d strips%s%s\n",
+            "other strips; its part of the model: %.0f mm^2 in %d strips%s%s%s%s\n",
             dir.c_str(), p.id, p.area_mm2, 100.0 * p.narrow_share, narrow_mm, p.neighbours,
             p.part_mm2, p.part_strips,
-            saddles.str().empty() ? "" : "; seam round a saddle with:", saddles.str().c_str());
+            saddles.str().empty() ? "" : "; seam round a saddle with:", saddles.str().c_str(),
+            p.neighbours == 0     ? ""
+            : folds.str().empty() ? "; folded over any seam edge it overlaps its neighbour"
+                                  : "; lies flat folded onto:",
+            folds.str().c_str());
       }
     }
     for (const auto& p : seams.problems) std::fprintf(stderr, "%s: %s\n", dir.c_str(), p.c_str());
   }
+  if (list)
+    std::fprintf(stderr,
+                 "narrow or small pieces glued to another: %ld; of them, lying flat folded onto a "
+                 "neighbour over one seam edge: %ld\n",
+                 beside, hinged);
   std::printf(
       "| **total** | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld | %ld "
       "| %ld | %ld | %ld |\n",

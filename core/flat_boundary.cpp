@@ -1,11 +1,14 @@
 #include "core/flat_boundary.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <utility>
+
+#include "core/overlap_2d.h"
 
 namespace papercraft {
 
@@ -122,6 +125,51 @@ double widest_corner_round_a_seam_vertex(const FlatStrip& a, const FlatStrip& b)
     widest = std::max(widest, least);
   }
   return widest * 180.0 / M_PI;
+}
+
+bool folds_flat_onto(const FlatStrip& a, const FlatStrip& b, double relative) {
+  using Segment = std::array<double, 6>;
+  const auto segment = [](const FlatStrip& strip, int from, int to) {
+    const Vec3 &p = strip.vertices3d[from], &q = strip.vertices3d[to];
+    return Segment{p.x(), p.y(), p.z(), q.x(), q.y(), q.z()};
+  };
+  std::map<Segment, const BoundaryEdge*> in_b;  // b's seam edges to a, by their 3D ends
+  for (const BoundaryEdge& e : b.boundary)
+    if (e.kind == EdgeKind::Seam && e.neighbour_strip == a.id) in_b[segment(b, e.v0, e.v1)] = &e;
+  double length = 0.0;
+  int edges = 0;
+  for (const FlatStrip* strip : {&a, &b})
+    for (const Triangle& t : strip->triangles)
+      for (int k = 0; k < 3; ++k, ++edges)
+        length += (strip->vertices2d[t[(k + 1) % 3]] - strip->vertices2d[t[k]]).norm();
+  if (edges == 0) return false;
+  const double tolerance = relative * length / edges;
+  TriangleGrid2 grid(length / edges);
+  for (const Triangle& t : b.triangles)
+    grid.insert({b.vertices2d[t[0]], b.vertices2d[t[1]], b.vertices2d[t[2]]});
+  for (const BoundaryEdge& e : a.boundary) {
+    if (e.kind != EdgeKind::Seam || e.neighbour_strip != b.id) continue;
+    // b's edge runs the other way round its strip.
+    auto partner = in_b.find(segment(a, e.v1, e.v0));
+    if (partner == in_b.end()) continue;
+    const Vec2 from = a.vertices2d[e.v0], to = a.vertices2d[e.v1];
+    const Vec2 onto_from = b.vertices2d[partner->second->v1],
+               onto_to = b.vertices2d[partner->second->v0];
+    const double turn = std::atan2((onto_to - onto_from).y(), (onto_to - onto_from).x()) -
+                        std::atan2((to - from).y(), (to - from).x());
+    const Eigen::Rotation2Dd rotation(turn);
+    const auto moved = [&](int v) -> Vec2 {
+      return onto_from + rotation * (a.vertices2d[v] - from);
+    };
+    bool flat = true;
+    for (const Triangle& t : a.triangles)
+      if (grid.overlaps({moved(t[0]), moved(t[1]), moved(t[2])}, tolerance)) {
+        flat = false;
+        break;
+      }
+    if (flat) return true;
+  }
+  return false;
 }
 
 double flat_area(const FlatStrip& strip) {

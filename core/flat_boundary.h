@@ -38,10 +38,18 @@ double flat_area(const FlatStrip& strip);
 /// seam edges whose neighbour is b's id, and of b on two of its seam edges to a; matched by
 /// their exact 3D points, and where a strip holds the point twice, its copy with the least
 /// corner), the corners of a's and b's triangles there summed, in degrees: the largest such
-/// sum, 0 where the chains have no inner vertex. Over 360, a hinge along a chain through that
-/// vertex lays the two over each other round it (the surface is a saddle there): no join in the
-/// plane along that chain takes one onto the other whole.
+/// sum, 0 where the chains have no inner vertex. Over 360, the surface is a saddle there: a
+/// hinge over an edge at that vertex lays the two over each other round it, and no union of
+/// the two lies flat with the seam closed there. (A hinge over an edge further along the seam
+/// may still lie flat: folds_flat_onto tries them.)
 double widest_corner_round_a_seam_vertex(const FlatStrip& a, const FlatStrip& b);
+
+/// Whether `a` folded out of `b` over some seam edge it shares with it lies flat beside it:
+/// a's edge laid on b's edge with the same two 3D points (exactly), a on the other side, and
+/// no triangle of a then overlapping one of b's deeper than `relative` times the mean length of
+/// their edges. False where they share no seam edge. What a hinge in the merge tries first (it
+/// also asks that the union not overlap other strips it takes).
+bool folds_flat_onto(const FlatStrip& a, const FlatStrip& b, double relative = 1e-6);
 
 /// The first triangle that turns clockwise in `points`, i.e. whose cross product is below
 /// -`relative` times its longest edge squared, or -1 if none does. Not judged: triangles

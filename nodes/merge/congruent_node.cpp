@@ -55,37 +55,39 @@ bool glued_to_another(const FlatStrip& strip) {
   });
 }
 
-// Where every seam of a piece with another runs round a saddle of the surface (the two pieces'
-// corners round a vertex of it summing to over 360 degrees), folding it flat onto any
-// neighbour along a seam lays the two over each other there: why no hinge took it whole, said
-// with the widest such vertex. Empty where some neighbour's seam has no such vertex.
-std::string saddle_reason(const FlatStrip& strip, const std::vector<FlatStrip>& strips) {
+// Why no hinge takes a piece glued to others: where, folded out of each neighbour over each
+// edge they share, it lies over that neighbour, says so, and names the neighbour whose seam with
+// it runs round the widest saddle of the surface (corners round a vertex of the seam summing to
+// over 360 degrees), if any. Empty where some fold lies flat (a hinge failed for another
+// reason: the union narrower, or over a third piece).
+std::string why_no_hinge(const FlatStrip& strip, const std::vector<FlatStrip>& strips) {
   std::set<int> neighbours;
   for (const BoundaryEdge& e : strip.boundary)
     if (e.kind == EdgeKind::Seam && e.neighbour_strip != strip.id)
       neighbours.insert(e.neighbour_strip);
   int widest_with = -1;
-  double widest = 0.0;
+  double widest = 360.5;  // below that, rounding
   for (int id : neighbours) {
     auto it = std::find_if(strips.begin(), strips.end(),
                            [&](const FlatStrip& other) { return other.id == id; });
-    if (it == strips.end()) return "";
+    if (it == strips.end() || folds_flat_onto(strip, *it)) return "";
     const double degrees = widest_corner_round_a_seam_vertex(strip, *it);
-    if (!(degrees > 360.5)) return "";
     if (degrees > widest) widest = degrees, widest_with = id;
   }
-  if (widest_with < 0) return "";
-  return ": each seam it has runs round a saddle of the surface, where folded flat onto the "
-         "neighbour it would lie over it (with flat strip " +
-         std::to_string(widest_with) + ", the two pieces' corners round one vertex sum to " +
-         std::to_string(std::lround(widest)) + " degrees)";
+  if (neighbours.empty()) return "";
+  std::string text = ": folded out of a neighbour over any edge they share, it would lie over it";
+  if (widest_with >= 0)
+    text += " (its seam with flat strip " + std::to_string(widest_with) +
+            " runs round a saddle of the surface: their corners round one vertex sum to " +
+            std::to_string(std::lround(widest)) + " degrees)";
+  return text;
 }
 
 // The pieces a person cannot handle, named in report.json and on stderr: those too small that
 // no neighbour takes, and those narrower than min_width_mm over more than their tips. A piece
 // glued to no other is a whole separate part of the model (a tooth, a claw, a button): no join
-// can grow or widen it, only a larger print scale, and the note says so. One whose every seam
-// runs round a saddle (saddle_reason) is said to be so.
+// can grow or widen it, only a larger print scale, and the note says so. One that no fold onto
+// a neighbour lays flat is said to be so (why_no_hinge).
 void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& strips,
                              const std::vector<int>& small) {
   const double scale = model.mm_per_unit();
@@ -94,7 +96,7 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
     const bool alone = !glued_to_another(strip);
     const std::string why = alone ? ": it is a separate part of the model by itself (a larger "
                                     "--height or --scale prints it larger)"
-                                  : saddle_reason(strip, strips);
+                                  : why_no_hinge(strip, strips);
     if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
       const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
                                std::to_string(std::lround(flat_area(strip) * scale * scale)) +

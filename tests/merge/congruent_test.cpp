@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "core/errors.h"
 #include "core/flat_boundary.h"
@@ -1106,16 +1107,21 @@ FlatStrip fan(int id, int neighbour, const std::vector<Vec3>& spokes,
   return strip;
 }
 
-// Two fans holding all of the surface round a vertex, each glued to the other along both its
-// spokes there: their corners round it sum to 360 degrees where the surface is flat there and
-// to more where it is a saddle (no hinge along the seam lays them flat together), and a seam of
-// one edge has no vertex inside it.
-TEST(WidestCornerRoundASeamVertex, SumsBothPiecesCornersRoundTheVertexInsideTheirSeam) {
+// The spokes of two fans round a vertex (a zigzag about the plane z = 0): the first fan's
+// four, then the second's, which begins at the first's last and ends at its first.
+std::pair<std::vector<Vec3>, std::vector<Vec3>> spokes_of_two_fans() {
   std::vector<Vec3> spokes;
   for (int k = 0; k < 6; ++k)
     spokes.emplace_back(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0.1 * (k % 2));
-  const std::vector<Vec3> first(spokes.begin(), spokes.begin() + 4);
-  const std::vector<Vec3> second = {spokes[3], spokes[4], spokes[5], spokes[0]};
+  return {{spokes[0], spokes[1], spokes[2], spokes[3]},
+          {spokes[3], spokes[4], spokes[5], spokes[0]}};
+}
+
+// Two fans holding all of the surface round a vertex, each glued to the other along both its
+// spokes there: their corners round it sum to 360 degrees where the surface is flat there and
+// to more where it is a saddle, and a seam of one edge has no vertex inside it.
+TEST(WidestCornerRoundASeamVertex, SumsBothPiecesCornersRoundTheVertexInsideTheirSeam) {
+  const auto [first, second] = spokes_of_two_fans();
   const FlatStrip a = fan(1, 2, first, {50, 50, 50});
   EXPECT_NEAR(widest_corner_round_a_seam_vertex(a, fan(2, 1, second, {70, 70, 70})), 360.0, 1e-9);
   const FlatStrip saddle = fan(2, 1, second, {80, 80, 70});
@@ -1127,6 +1133,33 @@ TEST(WidestCornerRoundASeamVertex, SumsBothPiecesCornersRoundTheVertexInsideThei
   FlatStrip other = saddle;
   other.id = 3;
   EXPECT_EQ(widest_corner_round_a_seam_vertex(a, other), 0.0);
+}
+
+// Folded out of the other fan over either spoke, a fan lies flat beside it where their corners
+// sum to 360 degrees, and overlaps it round the saddle; strips with no seam do not fold.
+TEST(FoldsFlatOnto, AFanFoldsFlatOntoItsNeighbourUnlessTheyMeetRoundASaddle) {
+  const auto [first, second] = spokes_of_two_fans();
+  // Each fan laid out turned and moved on the page, as a strip lies anywhere.
+  const auto moved = [](FlatStrip strip, double turn, const Vec2& by) {
+    const Eigen::Rotation2Dd rotation(turn);
+    for (Vec2& p : strip.vertices2d) p = rotation * p + by;
+    return strip;
+  };
+  const FlatStrip a = moved(fan(1, 2, first, {50, 50, 50}), 1.0, Vec2(5, -3));
+  const FlatStrip flat = moved(fan(2, 1, second, {70, 70, 70}), -2.0, Vec2(-4, 8));
+  const FlatStrip saddle = moved(fan(2, 1, second, {80, 80, 70}), 0.5, Vec2(1, 1));
+  EXPECT_TRUE(folds_flat_onto(a, flat));
+  EXPECT_TRUE(folds_flat_onto(flat, a));
+  EXPECT_FALSE(folds_flat_onto(a, saddle));
+  EXPECT_FALSE(folds_flat_onto(saddle, a));
+  // Glued over one spoke only: the seam has no vertex inside it, but folded over that spoke
+  // the fans still meet round the saddle's vertex.
+  const FlatStrip one_spoke = fan(1, 2, first, {50, 50, 50}, false);
+  EXPECT_TRUE(folds_flat_onto(one_spoke, flat));
+  EXPECT_FALSE(folds_flat_onto(one_spoke, saddle));
+  FlatStrip other = flat;
+  other.id = 3;
+  EXPECT_FALSE(folds_flat_onto(a, other));
 }
 
 }  // namespace
