@@ -142,9 +142,10 @@ bool folds_flat_onto(const FlatStrip& a, const FlatStrip& b, double relative) {
     for (const Triangle& t : strip->triangles)
       for (int k = 0; k < 3; ++k, ++edges)
         length += (strip->vertices2d[t[(k + 1) % 3]] - strip->vertices2d[t[k]]).norm();
-  if (edges == 0) return false;
-  const double tolerance = relative * length / edges;
-  TriangleGrid2 grid(length / edges);
+  const double mean_edge = edges > 0 ? length / edges : 0.0;
+  if (!(mean_edge > 0.0) || !std::isfinite(mean_edge)) return false;  // no triangle of area
+  const double tolerance = relative * mean_edge;
+  TriangleGrid2 grid(mean_edge);
   for (const Triangle& t : b.triangles)
     grid.insert({b.vertices2d[t[0]], b.vertices2d[t[1]], b.vertices2d[t[2]]});
   for (const BoundaryEdge& e : a.boundary) {
