@@ -27,8 +27,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -106,15 +104,10 @@ int merge_strips(int argc, char** argv) {
       "| run | strips | pieces | narrow | small | seconds |\n|---|---:|---:|---:|---:|---:|\n");
   for (int i = 0; i < argc; ++i) {
     const std::string dir = argv[i];
-    std::ifstream strips_file(dir + "/strips.json"), report_file(dir + "/report.json");
-    if (!strips_file || !report_file) {
-      std::fprintf(stderr, "merge_bench: %s: no strips.json or report.json\n", dir.c_str());
-      return 1;
-    }
-    const nlohmann::json report = nlohmann::json::parse(report_file);
-    const double mm = report.at("paper").at("mm_per_unit").get<double>();
-    std::vector<FlatStrip> strips =
-        testing::read_flat_strips(nlohmann::json::parse(strips_file).at("strips"));
+    auto run = testing::read_run_strips(dir, "merge_bench");
+    if (!run) return 1;
+    const double mm = run->mm_per_unit;
+    std::vector<FlatStrip> strips = std::move(run->strips);
     const int in = static_cast<int>(strips.size());
     const auto start = std::chrono::steady_clock::now();
     strips = merge_congruent(std::move(strips));

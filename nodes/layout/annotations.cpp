@@ -424,17 +424,27 @@ Placement place_labels(const StripData& data, Piece& piece, const std::vector<Ch
   };
   // Off the piece: the box meets none of its triangles and tabs (text printed beside it).
   std::vector<std::vector<Vec2>> flaps;
+  std::vector<Box2> flap_boxes;  // each flap's bounding box: a box beyond it meets none of it
   for (const Flap& flap : piece.flaps) {
     if (flap.base.size() < 2 || flap.outer.empty()) continue;
     flaps.emplace_back(flap.base.rbegin(), flap.base.rend());
     flaps.back().insert(flaps.back().end(), flap.outer.begin(), flap.outer.end());
+    flap_boxes.emplace_back();
+    for (const Vec2& p : flaps.back()) flap_boxes.back().add(p);
   }
   // Beside the piece, whatever other text is there: no cut line crosses it, and it meets none
   // of the piece's triangles and tabs.
   auto beside = [&](const std::array<Vec2, 4>& candidate) {
     if (!router.box_clear(candidate)) return false;
     if (overlaps_triangles(candidate.data(), 4, shapes, 0.0)) return false;
-    for (const auto& flap : flaps) {
+    Box2 around;
+    for (const Vec2& corner : candidate) around.add(corner);
+    for (std::size_t f = 0; f < flaps.size(); ++f) {
+      const Box2& box = flap_boxes[f];
+      if (around.hi.x() < box.lo.x() || box.hi.x() < around.lo.x() || around.hi.y() < box.lo.y() ||
+          box.hi.y() < around.lo.y())
+        continue;  // apart, touching not even at a point
+      const auto& flap = flaps[f];
       for (std::size_t i = 0; i < flap.size(); ++i)
         if (segment_crosses(flap[i], flap[(i + 1) % flap.size()], candidate)) return false;
       for (const Vec2& corner : candidate)

@@ -99,7 +99,8 @@ Mask rasterise(const NestShape& shape, double angle, double cell) {
   return mask;
 }
 
-// A page's occupied cells (grown by the spacing) and, per cell, the free run to its right.
+// A page's occupied cells (grown by the spacing) and, per cell, the run to its right: the free
+// cells from it (> 0) where it is free, minus the occupied cells from it (< 0) where it is not.
 class Sheet {
  public:
   Sheet(int width, int height)
@@ -136,9 +137,13 @@ class Sheet {
           if (k == hot) continue;
           const int* run = &run_[std::size_t(oy + r) * width_];
           for (const auto& [a, b] : mask.rows[r]) {
-            const int free = run[ox + a];
-            if (free < b - a) {
-              next = ox + free + 1;
+            const int here = run[ox + a];
+            if (here < b - a) {
+              // Every start of this interval up to the end of the occupied cells it meets
+              // first (at q, free or not from ox + a) covers one of them: the next offset to
+              // try puts it on the first free cell after them.
+              const int q = ox + a + std::max(here, 0);
+              next = q < width_ ? q - run[q] - a : width_;
               hot = r;
               break;
             }
@@ -177,10 +182,15 @@ class Sheet {
 
  private:
   void update_row(int y) {
-    int free = 0, longest = 0;
+    int free = 0, occupied = 0, longest = 0;
     for (int x = width_ - 1; x >= 0; --x) {
-      free = used_[std::size_t(y) * width_ + x] ? 0 : free + 1;
-      run_[std::size_t(y) * width_ + x] = free;
+      if (used_[std::size_t(y) * width_ + x]) {
+        free = 0, ++occupied;
+        run_[std::size_t(y) * width_ + x] = -occupied;
+      } else {
+        occupied = 0, ++free;
+        run_[std::size_t(y) * width_ + x] = free;
+      }
       longest = std::max(longest, free);
     }
     max_run_[y] = longest;

@@ -2,7 +2,10 @@
 // Flat strips read back from JSON in strips.json's layout (id, source_strip, vertices3d,
 // vertices2d, triangles and, where present, boundary): a run's output, or a test fixture.
 
+#include <cstdio>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +39,24 @@ inline std::vector<FlatStrip> read_flat_strips(const nlohmann::json& strips) {
     out.push_back(std::move(strip));
   }
   return out;
+}
+
+/// A finished run's flat strips (DIR/strips.json) and its print scale (report.json's paper
+/// mm_per_unit); nullopt, with the reason on stderr after `tool`, where either file is missing.
+struct RunStrips {
+  std::vector<FlatStrip> strips;
+  double mm_per_unit = 1.0;
+};
+inline std::optional<RunStrips> read_run_strips(const std::string& dir, const char* tool) {
+  std::ifstream strips_file(dir + "/strips.json"), report_file(dir + "/report.json");
+  if (!strips_file || !report_file) {
+    std::fprintf(stderr, "%s: %s: no strips.json or report.json\n", tool, dir.c_str());
+    return std::nullopt;
+  }
+  RunStrips run;
+  run.mm_per_unit = nlohmann::json::parse(report_file).at("paper").at("mm_per_unit").get<double>();
+  run.strips = read_flat_strips(nlohmann::json::parse(strips_file).at("strips"));
+  return run;
 }
 
 }  // namespace papercraft::testing
