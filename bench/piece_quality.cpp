@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
       for (FlatStrip& strip : papercraft::testing::read_flat_strips(strips))
         by_id[strip.id] = std::move(strip);
       for (const auto& p : pieces.shorts) {
-        std::ostringstream saddles;  // neighbours no hinge takes it onto whole
+        std::ostringstream saddles;  // neighbours whose seam with it runs round a saddle
         std::ostringstream folds;    // neighbours a hinge over one edge lays it flat onto
         const FlatStrip& strip = by_id.at(p.id);
         std::set<long> seen;
@@ -185,9 +185,10 @@ int main(int argc, char** argv) {
             dir.c_str(), p.id, p.area_mm2, 100.0 * p.narrow_share, narrow_mm, p.neighbours,
             p.part_mm2, p.part_strips,
             saddles.str().empty() ? "" : "; seam round a saddle with:", saddles.str().c_str(),
-            p.neighbours == 0     ? ""
-            : folds.str().empty() ? "; folded over any seam edge it overlaps its neighbour"
-                                  : "; lies flat folded onto:",
+            p.neighbours == 0 ? ""
+            : folds.str().empty()
+                ? "; folded out of any neighbour over any edge they share, it overlaps it"
+                : "; lies flat folded onto:",
             folds.str().c_str());
       }
     }

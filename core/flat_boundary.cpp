@@ -101,27 +101,28 @@ double widest_corner_round_a_seam_vertex(const FlatStrip& a, const FlatStrip& b)
       }
     return by_point;
   };
-  // The corners of the strip's triangles at vertex v, in radians.
-  const auto corner = [](const FlatStrip& strip, int v) {
-    double sum = 0.0;
+  // The corners of the strip's triangles at each vertex, summed, in radians.
+  const auto corners = [](const FlatStrip& strip) {
+    std::vector<double> sum(strip.vertices2d.size(), 0.0);
     for (const Triangle& t : strip.triangles)
       for (int k = 0; k < 3; ++k) {
-        if (t[k] != v) continue;
         const Vec2 u = strip.vertices2d[t[(k + 1) % 3]] - strip.vertices2d[t[k]];
         const Vec2 w = strip.vertices2d[t[(k + 2) % 3]] - strip.vertices2d[t[k]];
-        sum += std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)));
+        sum[t[k]] += std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)));
       }
     return sum;
   };
-  const auto in_b = inner(b, a.id);
+  const auto in_a = inner(a, b.id), in_b = inner(b, a.id);
+  if (in_a.empty() || in_b.empty()) return 0.0;
+  const std::vector<double> corner_a = corners(a), corner_b = corners(b);
   double widest = 0.0;
-  for (const auto& [point, a_vertices] : inner(a, b.id)) {
+  for (const auto& [point, a_vertices] : in_a) {
     auto it = in_b.find(point);
     if (it == in_b.end()) continue;
     // Where either holds the point twice, the pair of copies with the least sum.
     double least = std::numeric_limits<double>::infinity();
     for (int u : a_vertices)
-      for (int v : it->second) least = std::min(least, corner(a, u) + corner(b, v));
+      for (int v : it->second) least = std::min(least, corner_a[u] + corner_b[v]);
     widest = std::max(widest, least);
   }
   return widest * 180.0 / M_PI;

@@ -94,14 +94,20 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
   const PieceLimits limits = model.piece_limits();
   for (const FlatStrip& strip : strips) {
     const bool alone = !glued_to_another(strip);
-    const std::string why = alone ? ": it is a separate part of the model by itself (a larger "
-                                    "--height or --scale prints it larger)"
-                                  : why_no_hinge(strip, strips);
+    // Said only of a piece noted, once: the folds it tries cost a grid of each neighbour.
+    std::optional<std::string> said;
+    const auto why = [&]() -> const std::string& {
+      if (!said)
+        said = alone ? ": it is a separate part of the model by itself (a larger --height or "
+                       "--scale prints it larger)"
+                     : why_no_hinge(strip, strips);
+      return *said;
+    };
     if (std::find(small.begin(), small.end(), strip.id) != small.end()) {
       const std::string text = "flat strip " + std::to_string(strip.id) + " is " +
                                std::to_string(std::lround(flat_area(strip) * scale * scale)) +
                                " mm^2, below min_area_mm2" +
-                               (alone ? why : ", and no neighbour takes it" + why);
+                               (alone ? why() : ", and no neighbour takes it" + why());
       model.note(text);
       spdlog::warn("{}: {}", model.name, text);
     }
@@ -111,7 +117,7 @@ void note_unbuildable_pieces(ModelRun& model, const std::vector<FlatStrip>& stri
       if (narrow > limits.max_narrow_share) {
         const std::string text = "flat strip " + std::to_string(strip.id) + " is narrower than " +
                                  "min_width_mm over " + std::to_string(std::lround(100 * narrow)) +
-                                 "% of its area" + why;
+                                 "% of its area" + why();
         model.note(text);
         spdlog::warn("{}: {}", model.name, text);
       }
