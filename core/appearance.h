@@ -5,6 +5,8 @@
 // several materials and colours need nothing from the strips.
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,9 @@ namespace papercraft {
 struct Material {
   std::string name;     // the .mtl's newmtl name, or the texture's file name
   std::string texture;  // image path (resolved against the .mtl's or the mesh's folder); "" none
+  /// The image file's bytes where the mesh file holds them (a GLB's or a data URI's image);
+  /// `texture` then names it for messages ("cube.glb#image0.png"). Null: read `texture`.
+  std::shared_ptr<const std::vector<std::uint8_t>> texture_bytes;
 };
 
 /// Parallel to the faces of the loaded mesh (face f of the Mesh), each array either empty (the

@@ -139,6 +139,90 @@ def mesh_seeds(binary):
     put("load_stl", "tetra-solid-header.stl", stl_binary(v, f, b"solid but binary"))
 
 
+def gltf_document(vertices, faces, uri=None, extra=None):
+    """A glTF document of one indexed triangle primitive; its buffer a data URI unless `uri`.
+    Returns (json text, buffer bytes)."""
+    import base64
+    import json
+    positions = b"".join(struct.pack("<3f", *p) for p in vertices)
+    indices = b"".join(struct.pack("<3H", *t) for t in faces)
+    indices += b"\0" * (-len(indices) % 4)
+    buffer = positions + indices
+    doc = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0, "scale": [2, 2, 2], "children": [1]},
+                  {"mesh": 0, "translation": [3, 0, 0], "rotation": [0, 0, 0.7071068, 0.7071068]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(vertices), "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 1]},
+            {"bufferView": 1, "componentType": 5123, "count": 3 * len(faces), "type": "SCALAR"}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": len(positions)},
+                        {"buffer": 0, "byteOffset": len(positions), "byteLength": 6 * len(faces)}],
+        "buffers": [{"byteLength": len(buffer)}],
+    }
+    if uri is None:
+        doc["buffers"][0]["uri"] = ("data:application/octet-stream;base64," +
+                                    base64.b64encode(buffer).decode())
+    elif uri:
+        doc["buffers"][0]["uri"] = uri
+    if extra:
+        doc.update(extra)
+    return json.dumps(doc), buffer
+
+
+def glb(text, buffer):
+    body = text.encode() + b" " * (-len(text.encode()) % 4)
+    chunks = struct.pack("<I4s", len(body), b"JSON") + body
+    chunks += struct.pack("<I4s", len(buffer), b"BIN\0") + buffer
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
+def three_mf(vertices, faces, colour=True):
+    """A 3MF package of one mesh object, built twice as components (the second moved)."""
+    import io
+    import zipfile
+    vs = "".join('<vertex x="%g" y="%g" z="%g"/>' % p for p in vertices)
+    ts = "".join('<triangle v1="%d" v2="%d" v3="%d"%s/>' % (t + (' pid="2" p1="0"' if colour else "",))
+                 for t in faces)
+    model = ('<?xml version="1.0" encoding="UTF-8"?>\n<model unit="millimeter" xml:lang="en-US" '
+             'xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources>'
+             '<basematerials id="2"><base name="red" displaycolor="#FF0000"/></basematerials>'
+             '<object id="1" type="model"%s><mesh><vertices>%s</vertices><triangles>%s</triangles>'
+             '</mesh></object><object id="3" type="model"><components><component objectid="1"/>'
+             '<component objectid="1" transform="1 0 0 0 1 0 0 0 1 5 0 0"/></components></object>'
+             '</resources><build><item objectid="3"/></build></model>') % (
+                 ' pid="2" pindex="0"' if colour else "", vs, ts)
+    rels = ('<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.'
+            'openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model"'
+            ' Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/>'
+            '</Relationships>')
+    types = ('<?xml version="1.0" encoding="UTF-8"?>\n<Types xmlns="http://schemas.openxmlformats.'
+             'org/package/2006/content-types"><Default Extension="rels" ContentType="application/'
+             'vnd.openxmlformats-package.relationships+xml"/><Default Extension="model" ContentType='
+             '"application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>')
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+        z.writestr("[Content_Types].xml", types)
+        z.writestr("_rels/.rels", rels)
+        z.writestr("3D/3dmodel.model", model)
+    return out.getvalue()
+
+
+def scene_seeds():
+    v, f = TETRA_POINTS, TETRA_FACES
+    put("load_3mf", "tetra-components.3mf", three_mf(v, f))
+    put("load_3mf", "tetra-plain.3mf", three_mf(v, f, colour=False))
+    text, _ = gltf_document(v, f)
+    put("load_gltf", "tetra.gltf", text)
+    strip_text, _ = gltf_document(v, f, extra=None)
+    put("load_gltf", "tetra-strip.gltf", strip_text.replace('"mode": 4', '"mode": 5'))
+    put("load_gltf", "tetra-fan.gltf", strip_text.replace('"mode": 4', '"mode": 6'))
+    text, buffer = gltf_document(v, f, uri="")
+    put("load_glb", "tetra.glb", glb(text, buffer))
+    put("load_glb", "tetra-lines.glb", glb(text.replace('"mode": 4', '"mode": 1'), buffer))
+
+
 def other_seeds(cgal):
     put("mtl", "two.mtl", "newmtl a\nKd 1 1 1\nmap_Kd -s 1 1 1 wood.png\n"
         "newmtl b\nmap_Kd -o 0.5 0.5 0 -clamp on stone texture.jpg\n")
@@ -156,8 +240,12 @@ def other_seeds(cgal):
                 shutil.copy(path, os.path.join(CORPUS, "load_off", "cgal-" + name))
 
 
+if __name__ == "__main__" and sys.argv[1:2] == ["--scenes"]:
+    scene_seeds()  # the glTF, GLB and 3MF seeds alone
+    sys.exit(0)
 if __name__ == "__main__":
     if len(sys.argv) < 2:
         sys.exit(__doc__)
     mesh_seeds(sys.argv[1])
+    scene_seeds()
     other_seeds(sys.argv[2] if len(sys.argv) > 2 else None)

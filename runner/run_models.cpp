@@ -59,6 +59,8 @@ void require_writable_folder(const std::filesystem::path& folder) {
   std::filesystem::remove(probe, ec);
 }
 
+}  // namespace
+
 std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const PipelineConfig& config) {
   auto settings = std::make_shared<RunSettings>();
   settings->tolerance = config.tolerance.value_or(ToleranceSpec{});
@@ -98,6 +100,8 @@ std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const Pipel
   if (request.min_area_mm2) paper.min_area_mm2 = *request.min_area_mm2;
   return settings;
 }
+
+namespace {
 
 // The line a model gets on stdout when it is recorded.
 std::string result_line(const BatchRow& row) {

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "graph/config.h"
+#include "graph/model_run.h"
 #include "runner/progress_display.h"
 
 namespace papercraft {
@@ -38,6 +40,11 @@ struct RunRequest {
   bool force = false;           // batch: redo models an earlier run finished
   double grace_seconds = 10.0;  // SIGINT/SIGTERM: how long running models may finish
 };
+
+/// The settings every model of `request` runs with: its tolerance, paper and threads over the
+/// config's. Throws InvalidInputException for a tolerance that does not parse or one above 50%
+/// of the largest side without allow_large_tolerance.
+std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const PipelineConfig& config);
 
 /// Runs the request and returns the exit code. block_stop_signals() must have been called
 /// before any thread started. Throws ConfigException, InvalidInputException or IOException

@@ -56,7 +56,9 @@ std::vector<std::shared_ptr<const Image>> material_images(ModelRun& model,
     const Material& material = appearance.materials[m];
     if (material.texture.empty()) continue;
     try {
-      images[m] = std::make_shared<const Image>(load_image(material.texture, max_pixels));
+      images[m] = std::make_shared<const Image>(
+          material.texture_bytes ? decode_image(material.texture, *material.texture_bytes, max_pixels)
+                                 : load_image(material.texture, max_pixels));
     } catch (const std::exception& e) {
       const std::string text = "texture of material '" + printable_utf8(material.name) +
                                "' not printed: " + printable_utf8(e.what());

@@ -31,23 +31,21 @@ void check_size(const std::filesystem::path& path, long width, long height, long
                    "): not read");
 }
 
-Image read_png(const std::filesystem::path& path, long max_pixels) {
-  // The IHDR chunk follows the 8-byte signature: width and height, big-endian, at 16 and 20.
-  std::array<unsigned char, 24> header{};
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (!in.read(reinterpret_cast<char*>(header.data()), header.size()))
-      fail(path, "cannot read the PNG header");
-  }
+// The IHDR chunk follows the 8-byte signature: width and height, big-endian, at 16 and 20.
+void check_png_header(const std::filesystem::path& path, const unsigned char* header,
+                      long max_pixels) {
   static constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (!std::equal(header.begin(), header.begin() + 8, kSignature)) fail(path, "not a PNG file");
+  if (!std::equal(header, header + 8, kSignature)) fail(path, "not a PNG file");
   auto be32 = [&](int at) {
     return (long(header[at]) << 24) | (long(header[at + 1]) << 16) | (long(header[at + 2]) << 8) |
            long(header[at + 3]);
   };
   check_size(path, be32(16), be32(20), max_pixels);
-  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> surface(
-      cairo_image_surface_create_from_png(path.c_str()), &cairo_surface_destroy);
+}
+
+using SurfacePtr = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
+
+Image image_of_surface(const std::filesystem::path& path, const SurfacePtr& surface) {
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     fail(path, std::string("cannot decode the PNG: ") +
                    cairo_status_to_string(cairo_surface_status(surface.get())));
@@ -82,6 +80,43 @@ Image read_png(const std::filesystem::path& path, long max_pixels) {
   return image;
 }
 
+Image read_png(const std::filesystem::path& path, long max_pixels) {
+  std::array<unsigned char, 24> header{};
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in.read(reinterpret_cast<char*>(header.data()), header.size()))
+      fail(path, "cannot read the PNG header");
+  }
+  check_png_header(path, header.data(), max_pixels);
+  const SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()),
+                           &cairo_surface_destroy);
+  return image_of_surface(path, surface);
+}
+
+// cairo's PNG stream reader over bytes in memory.
+struct MemoryReader {
+  const std::vector<std::uint8_t>* bytes;
+  std::size_t at = 0;
+};
+
+cairo_status_t read_from_memory(void* closure, unsigned char* data, unsigned int length) {
+  auto* reader = static_cast<MemoryReader*>(closure);
+  if (reader->bytes->size() - reader->at < length) return CAIRO_STATUS_READ_ERROR;
+  std::memcpy(data, reader->bytes->data() + reader->at, length);
+  reader->at += length;
+  return CAIRO_STATUS_SUCCESS;
+}
+
+Image decode_png(const std::filesystem::path& name, const std::vector<std::uint8_t>& bytes,
+                 long max_pixels) {
+  if (bytes.size() < 24) fail(name, "cannot read the PNG header");
+  check_png_header(name, bytes.data(), max_pixels);
+  MemoryReader reader{&bytes};
+  const SurfacePtr surface(cairo_image_surface_create_from_png_stream(&read_from_memory, &reader),
+                           &cairo_surface_destroy);
+  return image_of_surface(name, surface);
+}
+
 struct JpegError {
   jpeg_error_mgr manager;
   std::jmp_buf jump;
@@ -94,10 +129,9 @@ void on_jpeg_error(j_common_ptr info) {
   std::longjmp(error->jump, 1);
 }
 
-Image read_jpeg(const std::filesystem::path& path, long max_pixels) {
-  std::unique_ptr<std::FILE, decltype(&std::fclose)> file(std::fopen(path.c_str(), "rb"),
-                                                          &std::fclose);
-  if (!file) fail(path, "cannot open the file");
+// Decodes from `file` when given, else from `bytes`.
+Image read_jpeg(const std::filesystem::path& path, std::FILE* file,
+                const std::vector<std::uint8_t>* bytes, long max_pixels) {
   jpeg_decompress_struct info;
   JpegError error;
   info.err = jpeg_std_error(&error.manager);
@@ -110,7 +144,10 @@ Image read_jpeg(const std::filesystem::path& path, long max_pixels) {
     fail(path, std::string("cannot decode the JPEG: ") + error.message);
   }
   jpeg_create_decompress(&info);
-  jpeg_stdio_src(&info, file.get());
+  if (file != nullptr)
+    jpeg_stdio_src(&info, file);
+  else
+    jpeg_mem_src(&info, bytes->data(), static_cast<unsigned long>(bytes->size()));
   jpeg_read_header(&info, TRUE);
   if (long(info.image_width) * long(info.image_height) > max_pixels) {
     too_large_width = info.image_width;
@@ -157,8 +194,23 @@ Image load_image(const std::filesystem::path& path, long max_pixels) {
   std::string extension = path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".png") return read_png(path, max_pixels);
-  if (extension == ".jpg" || extension == ".jpeg") return read_jpeg(path, max_pixels);
+  if (extension == ".jpg" || extension == ".jpeg") {
+    std::unique_ptr<std::FILE, decltype(&std::fclose)> file(std::fopen(path.c_str(), "rb"),
+                                                            &std::fclose);
+    if (!file) fail(path, "cannot open the file");
+    return read_jpeg(path, file.get(), nullptr, max_pixels);
+  }
   fail(path, "unsupported image format " + extension + " (PNG and JPEG are read)");
+}
+
+Image decode_image(const std::string& name, const std::vector<std::uint8_t>& bytes,
+                   long max_pixels) {
+  if (bytes.size() >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' &&
+      bytes[3] == 'G')
+    return decode_png(name, bytes, max_pixels);
+  if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff)
+    return read_jpeg(name, nullptr, &bytes, max_pixels);
+  fail(name, "unsupported image format (PNG and JPEG are read)");
 }
 
 }  // namespace papercraft

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/triangle_mesh.h"
@@ -26,5 +27,11 @@ struct Image {
 /// \throws IOException naming the file when it is missing, unreadable, of another format, or
 ///   larger than max_pixels (width * height).
 Image load_image(const std::filesystem::path& path, long max_pixels);
+
+/// Decodes a PNG or JPEG held in memory (told apart by their signatures); `name` is what
+/// messages call it (e.g. "cube.glb#image0.png").
+/// \throws IOException naming `name` as load_image does.
+Image decode_image(const std::string& name, const std::vector<std::uint8_t>& bytes,
+                   long max_pixels);
 
 }  // namespace papercraft

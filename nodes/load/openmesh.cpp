@@ -19,6 +19,7 @@
 #include "nodes/load/prescan.h"
 #include "nodes/load/recording_importer.h"
 #include "nodes/load/repair.h"
+#include "nodes/load/scene_formats.h"
 #include "nodes/load/soup.h"
 #include "nodes/load/triangulate.h"
 
@@ -27,6 +28,15 @@ namespace load_internal {
 namespace {
 
 std::string texture_of(const RawMesh& raw, const Prescan& scan, const std::filesystem::path& path) {
+  if (!raw.face_material.empty()) {  // a scene format: the material of most faces
+    std::map<int, std::size_t> faces;
+    for (int m : raw.face_material)
+      if (m >= 0) ++faces[m];
+    int best = -1;
+    for (const auto& [m, n] : faces)
+      if (best < 0 || n > faces[best]) best = m;
+    return best >= 0 ? raw.materials[best].texture : std::string();
+  }
   if (scan.format == Format::ply && !scan.ply_texture.empty()) {
     return (path.parent_path() / scan.ply_texture).lexically_normal().string();
   }
@@ -54,7 +64,10 @@ struct RawAppearance {
 RawAppearance raw_appearance(const RawMesh& raw, const Prescan& scan,
                              const std::filesystem::path& path) {
   RawAppearance a;
-  if (scan.format == Format::ply && !scan.ply_texture.empty()) {
+  if (!raw.face_material.empty()) {  // a scene format: its materials as read
+    a.materials = raw.materials;
+    a.face_material = raw.face_material;
+  } else if (scan.format == Format::ply && !scan.ply_texture.empty()) {
     a.materials.push_back(
         {scan.ply_texture, (path.parent_path() / scan.ply_texture).lexically_normal().string()});
     a.face_material.assign(raw.n_faces(), 0);
@@ -319,9 +332,11 @@ Format format_of(const std::filesystem::path& path, const std::string& file) {
   if (extension == ".off") return Format::off;
   if (extension == ".ply") return Format::ply;
   if (extension == ".stl") return Format::stl;
+  if (extension == ".gltf" || extension == ".glb") return Format::gltf;
+  if (extension == ".3mf") return Format::threemf;
   throw_invalid(file, (extension.empty() ? std::string("no file extension")
                                          : "unknown extension " + in_quotes(extension)) +
-                          " (supported: .obj, .off, .ply, .stl)");
+                          " (supported: .obj, .off, .ply, .stl, .gltf, .glb, .3mf)");
 }
 
 }  // namespace
@@ -342,7 +357,11 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
 
   Prescan scan;
   RawMesh raw;
-  {
+  if (format == Format::gltf) {
+    scan = read_gltf(path, file, options, raw);
+  } else if (format == Format::threemf) {
+    scan = read_3mf(path, file, options, raw);
+  } else {
     FileScanner in(path, file, size);
     switch (format) {
       case Format::obj:
@@ -356,6 +375,9 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
         break;
       case Format::stl:
         scan = prescan_stl(in, file, options);
+        break;
+      case Format::gltf:
+      case Format::threemf:
         break;
     }
   }

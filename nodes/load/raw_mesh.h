@@ -5,6 +5,8 @@
 
 #include <OpenMesh/Core/Geometry/VectorT.hh>
 #include <cstddef>
+
+#include "core/appearance.h"
 #include <map>
 #include <string>
 #include <vector>
@@ -33,6 +35,10 @@ struct RawMesh {
   std::vector<char> vertex_has_colour;
   std::vector<Vec3d> face_colour;
   std::vector<char> face_has_colour;
+  // Materials of a scene format (glTF, 3MF): their textures resolved or held in memory, and
+  // per face the material (-1: none), once any face had one.
+  std::vector<Material> materials;
+  std::vector<int> face_material;
 
   std::size_t n_faces() const { return face_start.size() - 1; }
 };

@@ -24,6 +24,7 @@
 #include "core/generate.h"
 #include "support/brute_force_hausdorff.h"
 #include "support/pipeline_run.h"
+#include "support/scene_writers.h"
 
 namespace papercraft {
 namespace {
@@ -268,6 +269,55 @@ TEST(Texture, CubeOfSixUvIslandsPrintsEachFaceInItsColour) {
   EXPECT_GT(checked.sampled, 50) << checked;
   EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
   std::cout << "[ colours  ] " << checked << "\n";
+}
+
+// The same atlas cube as a GLB with the PNG inside it: the image the GLB holds is printed.
+TEST(Texture, GlbWithItsEmbeddedTexturePrintsEachFaceInItsColour) {
+  const auto dir = testing::fresh_temp_dir("atlas_glb");
+  write_png(dir / "atlas.png", 96, 64,
+            [](int x, int y) { return kSideColours[(y / 32) * 3 + x / 32]; });
+  const TriangleMesh box = generate_shape("box", {{"size_x", 2}, {"size_y", 2}, {"size_z", 2}});
+  testing::SceneMesh mesh;
+  mesh.positions = box.vertices;
+  for (const Triangle& t : box.triangles) {
+    mesh.triangles.push_back({t[0], t[1], t[2]});
+    const Vec3 n =
+        (box.vertices[t[1]] - box.vertices[t[0]]).cross(box.vertices[t[2]] - box.vertices[t[0]]);
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+    const int side = 2 * axis + (n[axis] > 0 ? 1 : 0);
+    const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+    const double cell_u = (side % 3) / 3.0, cell_v = 1.0 - (side / 3 + 1) / 2.0;
+    std::array<Vec2, 3> uv;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = box.vertices[t[k]];
+      uv[k] = Vec2(cell_u + (0.05 + 0.9 * (p[u_axis] + 1) / 2) / 3.0,
+                   cell_v + (0.05 + 0.9 * (p[v_axis] + 1) / 2) / 2.0);
+    }
+    mesh.corner_uv.push_back(uv);
+  }
+  testing::GltfOptions options;
+  {
+    std::ifstream png(dir / "atlas.png", std::ios::binary);
+    options.png.assign(std::istreambuf_iterator<char>(png), {});
+  }
+  std::filesystem::remove(dir / "atlas.png");  // only the copy inside the GLB is left
+  ASSERT_TRUE(testing::write_gltf(dir / "cube.glb", mesh, options));
+  const auto out = run_file(dir / "cube.glb", "2%");
+  ASSERT_TRUE(out.result.ok) << out.result.error;
+  EXPECT_GE(out.report.at("texture").at("baked_images").get<int>(), 1);
+  if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
+  const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(p[k]) > std::abs(p[axis])) axis = k;
+    for (int k = 0; k < 3; ++k)
+      if (k != axis && std::abs(p[k]) > 0.9) return std::nullopt;
+    return kSideColours[2 * axis + (p[axis] > 0 ? 1 : 0)];
+  });
+  EXPECT_GT(checked.sampled, 50) << checked;
+  EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
 }
 
 // A capped cylinder whose side is unwrapped around the axis (u wraps from 1 back to 0 on one

@@ -1,0 +1,331 @@
+// The Python module's C++ half (`papercraft._papercraft`): the loader and the pipeline on numpy
+// arrays. The Python half (papercraft/__init__.py) turns what this returns into the documented
+// API. Uses pybind11 2.10's API only (Debian 12's).
+//
+// run() hands the arrays to the same loader as the command line (written losslessly as an OFF
+// into a private temporary folder, so its repairs and errors are the command line's), runs the
+// pipeline into that folder with the GIL released, keeps every output file in memory and
+// removes the folder before it returns: nothing is left on disk until Result.write(folder).
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "graph/config.h"
+#include "graph/pipeline.h"
+#include "graph/registry.h"
+#include "nodes/load/openmesh.h"
+#include "runner/batch_journal.h"
+#include "runner/batch_row.h"
+#include "runner/batch_summary.h"
+#include "runner/run_models.h"
+
+namespace py = pybind11;
+
+namespace papercraft::python {
+namespace {
+
+constexpr const char* kArrays = "<arrays>";
+
+// A folder of its own under the system's temporary folder, removed with this object.
+class PrivateFolder {
+ public:
+  PrivateFolder() {
+    static std::atomic<long> counter{0};
+    path_ = std::filesystem::temp_directory_path() /
+            ("papercraft-py-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~PrivateFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  if (from.empty()) return text;
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// The vertices as an (n, 3) array of finite float64, checked.
+py::array_t<double, py::array::c_style> checked_vertices(const py::array& v) {
+  if (v.ndim() != 2 || v.shape(1) != 3)
+    throw py::value_error("vertices must be an (n, 3) array, got shape " +
+                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
+                              v.shape(), v.shape() + v.ndim()))))));
+  const char kind = v.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u')
+    throw py::value_error("vertices must be numbers (float or integer), got dtype " +
+                          std::string(py::str(v.dtype())));
+  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(v);
+  if (!a) throw py::value_error("vertices cannot be read as float64");
+  const double* p = a.data();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i)
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(p[3 * i + k]))
+        throw py::value_error("vertex " + std::to_string(i) + " is not finite (" +
+                              std::to_string(p[3 * i + k]) + ")");
+  return a;
+}
+
+py::array_t<long long, py::array::c_style> checked_faces(const py::array& f, py::ssize_t vertices) {
+  if (f.ndim() != 2 || f.shape(1) != 3)
+    throw py::value_error("faces must be an (m, 3) array of vertex indices, got shape " +
+                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
+                              f.shape(), f.shape() + f.ndim()))))));
+  const char kind = f.dtype().kind();
+  if (kind != 'i' && kind != 'u')
+    throw py::value_error("faces must be integers, got dtype " + std::string(py::str(f.dtype())));
+  auto a = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(f);
+  if (!a) throw py::value_error("faces cannot be read as integers");
+  if (a.shape(0) == 0) throw py::value_error("faces: the mesh has no faces");
+  const long long* p = a.data();
+  for (py::ssize_t i = 0; i < 3 * a.shape(0); ++i)
+    if (p[i] < 0 || p[i] >= vertices)
+      throw py::value_error("face " + std::to_string(i / 3) + " has vertex index " +
+                            std::to_string(p[i]) + ", out of range for " +
+                            std::to_string(vertices) + " vertices");
+  return a;
+}
+
+void write_off(const std::filesystem::path& path, const py::array_t<double, py::array::c_style>& v,
+               const py::array_t<long long, py::array::c_style>& f) {
+  std::FILE* out = std::fopen(path.c_str(), "w");
+  if (out == nullptr) throw IOException(path.string() + ": cannot write");
+  std::fprintf(out, "OFF\n%zd %zd 0\n", v.shape(0), f.shape(0));
+  const double* p = v.data();
+  for (py::ssize_t i = 0; i < v.shape(0); ++i)
+    std::fprintf(out, "%.17g %.17g %.17g\n", p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+  const long long* t = f.data();
+  for (py::ssize_t i = 0; i < f.shape(0); ++i)
+    std::fprintf(out, "3 %lld %lld %lld\n", t[3 * i], t[3 * i + 1], t[3 * i + 2]);
+  if (std::fclose(out) != 0) throw IOException(path.string() + ": cannot write");
+}
+
+// A Python value as YAML.
+YAML::Node yaml_of(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return YAML::Node(value.cast<bool>());
+  if (py::isinstance<py::int_>(value)) return YAML::Node(value.cast<long long>());
+  if (py::isinstance<py::float_>(value)) return YAML::Node(value.cast<double>());
+  if (py::isinstance<py::str>(value)) return YAML::Node(value.cast<std::string>());
+  if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
+    YAML::Node list(YAML::NodeType::Sequence);
+    for (const py::handle item : value) list.push_back(yaml_of(item));
+    return list;
+  }
+  throw py::value_error("a node parameter must be a bool, number, string or list, got " +
+                        std::string(py::str(value.get_type())));
+}
+
+// The config to run: the builtin one, a file or YAML text, with node parameters set over it
+// ({"layout.page": "A3"}) and the json files always written (Result reads them).
+PipelineConfig config_of(const std::optional<std::string>& config, const py::dict& node_params) {
+  const Registry& registry = builtin_registry();
+  std::string text = default_config_text();
+  std::string file = "<builtin default.yaml>";
+  if (config) {
+    std::error_code ec;
+    if (config->find('\n') == std::string::npos && std::filesystem::is_regular_file(*config, ec)) {
+      std::ifstream in(*config);
+      std::stringstream buffer;
+      buffer << in.rdbuf();
+      text = buffer.str();
+      file = *config;
+    } else {
+      text = *config;
+      file = "<config text>";
+    }
+  }
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw py::value_error(file + ": " + e.what());
+  }
+  if (!root.IsMap() || !root["nodes"] || !root["nodes"].IsMap())
+    return parse_pipeline_config(text, file, registry);  // its own message
+  for (const auto& [key, value] : node_params) {
+    const std::string name = py::str(key);
+    const std::size_t dot = name.find('.');
+    if (dot == std::string::npos || dot == 0 || dot + 1 == name.size())
+      throw py::value_error("unknown parameter '" + name +
+                            "' (node parameters are given as 'node.param', e.g. 'layout.page')");
+    const std::string node = name.substr(0, dot), param = name.substr(dot + 1);
+    if (!root["nodes"][node])
+      throw py::value_error("unknown node '" + node + "' in parameter '" + name + "'");
+    root["nodes"][node]["params"][param] = yaml_of(value);
+  }
+  for (auto entry : root["nodes"]) {
+    YAML::Node node = entry.second;
+    if (node["impl"] && node["impl"].as<std::string>() == "export.files" && node["params"] &&
+        node["params"]["formats"]) {
+      bool json = false;
+      for (auto f : node["params"]["formats"]) json = json || f.as<std::string>() == "json";
+      if (!json) node["params"]["formats"].push_back("json");
+    }
+  }
+  if (node_params.size() > 0 || text != YAML::Dump(root)) {
+    YAML::Emitter out;
+    out << root;
+    text = out.c_str();
+    if (node_params.size() > 0) file += " with parameters";
+  }
+  return parse_pipeline_config(text, file, registry);
+}
+
+// What run() made: the files of the model's folder, in memory, and its summary row.
+struct RunOutput {
+  std::string name;
+  std::map<std::string, py::bytes> files;
+  ModelResult result;
+
+  void write(const std::string& folder) const {
+    const std::filesystem::path out(folder);
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec) throw IOException(folder + ": cannot create folder: " + ec.message());
+    const std::filesystem::path partial = out / ("." + name + ".partial");
+    std::filesystem::remove_all(partial, ec);
+    std::filesystem::create_directories(partial, ec);
+    if (ec) throw IOException(partial.string() + ": cannot create folder: " + ec.message());
+    for (const auto& [file, bytes] : files) write_file_atomic(partial / file, std::string(bytes));
+    const std::filesystem::path final_dir = out / name;
+    std::filesystem::remove_all(final_dir, ec);
+    std::filesystem::rename(partial, final_dir, ec);
+    if (ec) throw IOException(final_dir.string() + ": cannot write: " + ec.message());
+    // run.json and run.jsonl, as `papercraft run` writes them.
+    JournalOptions options;
+    options.files = run_summary_files(out);
+    BatchJournal journal(options, {pending_row(name, kArrays)});
+    journal.started(0);
+    BatchRow row = row_from_result(result, out, unix_seconds_now());
+    row.input = kArrays;
+    journal.record(0, row);
+    journal.close("");
+  }
+};
+
+py::tuple load(const std::string& path) {
+  LoadedMesh loaded;
+  {
+    py::gil_scoped_release release;
+    loaded = load_mesh(path);
+  }
+  const Mesh& mesh = loaded.mesh;
+  py::array_t<double> v({static_cast<py::ssize_t>(mesh.n_vertices()), py::ssize_t{3}});
+  auto vv = v.mutable_unchecked<2>();
+  for (auto h : mesh.vertices())
+    for (int k = 0; k < 3; ++k) vv(h.idx(), k) = mesh.point(h)[k];
+  py::array_t<int> f({static_cast<py::ssize_t>(mesh.n_faces()), py::ssize_t{3}});
+  auto ff = f.mutable_unchecked<2>();
+  for (auto face : mesh.faces()) {
+    int k = 0;
+    for (auto h : face.vertices()) ff(face.idx(), k++) = h.idx();
+  }
+  return py::make_tuple(v, f);
+}
+
+RunOutput run(const py::array& vertices, const py::array& faces, const std::string& tolerance,
+              std::optional<double> height_mm, int threads, std::optional<std::string> config,
+              const std::string& name, const py::dict& paper, const py::dict& node_params) {
+  const auto v = checked_vertices(vertices);
+  const auto f = checked_faces(faces, v.shape(0));
+  if (name.empty() || name.find('/') != std::string::npos || name[0] == '.')
+    throw py::value_error("name must be a plain folder name, got '" + name + "'");
+  if (threads < 0) throw py::value_error("threads must be at least 0, got " + std::to_string(threads));
+  PipelineConfig pipeline_config = config_of(config, node_params);
+  RunRequest request;
+  request.tolerance = tolerance;
+  request.height_mm = height_mm;
+  request.threads = threads;
+  for (const auto& [key, value] : paper) {
+    const std::string k = py::str(key);
+    if (k == "min_width_mm") request.min_width_mm = value.cast<double>();
+    else if (k == "min_area_mm2") request.min_area_mm2 = value.cast<double>();
+    else if (k == "scale") request.scale = value.cast<double>();
+    else if (k == "max_pages") request.max_pages = value.cast<int>();
+    else if (k == "allow_large_tolerance") request.allow_large_tolerance = value.cast<bool>();
+    else throw py::value_error("unknown parameter '" + k + "'");
+  }
+  if (request.scale) request.height_mm.reset();
+  const PrivateFolder folder;
+  const std::filesystem::path input = folder.path() / (name + ".off");
+  write_off(input, v, f);
+  request.output = folder.path() / "out";
+  const std::shared_ptr<RunSettings> settings = run_settings(request, pipeline_config);
+  std::filesystem::create_directories(request.output);
+
+  RunOutput output;
+  output.name = name;
+  {
+    py::gil_scoped_release release;
+    Pipeline pipeline(std::move(pipeline_config), builtin_registry());
+    PipelineOptions options;
+    options.threads = settings->threads;
+    options.names = {name};
+    output.result = pipeline.run({input}, settings, options).at(0);
+  }
+  output.result.input = kArrays;
+  if (!output.result.ok) {
+    const std::string error = replace_all(output.result.error, input.string(), kArrays);
+    if (output.result.internal_error) throw std::runtime_error(error);
+    throw py::value_error(error);
+  }
+  const std::filesystem::path dir = request.output / name;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (entry.path().filename() == "report.json")
+      bytes = replace_all(bytes, input.string(), kArrays);
+    output.files.emplace(entry.path().filename().string(), py::bytes(bytes));
+  }
+  return output;
+}
+
+}  // namespace
+}  // namespace papercraft::python
+
+PYBIND11_MODULE(_papercraft, m) {
+  using namespace papercraft;
+  using namespace papercraft::python;
+  m.doc() = "papercraft's C++ core; use the papercraft package";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InvalidInputException& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const ConfigException& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const IOException& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    }
+  });
+  py::class_<RunOutput>(m, "RunOutput")
+      .def_readonly("name", &RunOutput::name)
+      .def_readonly("files", &RunOutput::files)
+      .def("write", &RunOutput::write, py::arg("folder"));
+  m.def("load", &load, py::arg("path"));
+  m.def("run", &run, py::arg("vertices"), py::arg("faces"), py::arg("tolerance"),
+        py::arg("height_mm"), py::arg("threads"), py::arg("config"), py::arg("name"),
+        py::arg("paper"), py::arg("node_params"));
+  m.attr("__version__") = PAPERCRAFT_VERSION;
+}
