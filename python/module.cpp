@@ -65,12 +65,15 @@ std::string replace_all(std::string text, const std::string& from, const std::st
   return text;
 }
 
+// An array's shape as numpy prints it: "(4, 2)".
+std::string shape_of(const py::array& a) {
+  return py::str(py::tuple(py::cast(std::vector<py::ssize_t>(a.shape(), a.shape() + a.ndim()))));
+}
+
 // The vertices as an (n, 3) array of finite float64, checked.
 py::array_t<double, py::array::c_style> checked_vertices(const py::array& v) {
   if (v.ndim() != 2 || v.shape(1) != 3)
-    throw py::value_error("vertices must be an (n, 3) array, got shape " +
-                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
-                              v.shape(), v.shape() + v.ndim()))))));
+    throw py::value_error("vertices must be an (n, 3) array, got shape " + shape_of(v));
   const char kind = v.dtype().kind();
   if (kind != 'f' && kind != 'i' && kind != 'u')
     throw py::value_error("vertices must be numbers (float or integer), got dtype " +
@@ -89,8 +92,7 @@ py::array_t<double, py::array::c_style> checked_vertices(const py::array& v) {
 py::array_t<long long, py::array::c_style> checked_faces(const py::array& f, py::ssize_t vertices) {
   if (f.ndim() != 2 || f.shape(1) != 3)
     throw py::value_error("faces must be an (m, 3) array of vertex indices, got shape " +
-                          std::string(py::str(py::tuple(py::cast(std::vector<py::ssize_t>(
-                              f.shape(), f.shape() + f.ndim()))))));
+                          shape_of(f));
   const char kind = f.dtype().kind();
   if (kind != 'i' && kind != 'u')
     throw py::value_error("faces must be integers, got dtype " + std::string(py::str(f.dtype())));
@@ -162,6 +164,7 @@ PipelineConfig config_of(const std::optional<std::string>& config, const py::dic
   }
   if (!root.IsMap() || !root["nodes"] || !root["nodes"].IsMap())
     return parse_pipeline_config(text, file, registry);  // its own message
+  bool changed = false;
   for (const auto& [key, value] : node_params) {
     const std::string name = py::str(key);
     const std::size_t dot = name.find('.');
@@ -172,6 +175,7 @@ PipelineConfig config_of(const std::optional<std::string>& config, const py::dic
     if (!root["nodes"][node])
       throw py::value_error("unknown node '" + node + "' in parameter '" + name + "'");
     root["nodes"][node]["params"][param] = yaml_of(value);
+    changed = true;
   }
   for (auto entry : root["nodes"]) {
     YAML::Node node = entry.second;
@@ -179,16 +183,17 @@ PipelineConfig config_of(const std::optional<std::string>& config, const py::dic
         node["params"]["formats"]) {
       bool json = false;
       for (auto f : node["params"]["formats"]) json = json || f.as<std::string>() == "json";
-      if (!json) node["params"]["formats"].push_back("json");
+      if (!json) {
+        node["params"]["formats"].push_back("json");
+        changed = true;
+      }
     }
   }
-  if (node_params.size() > 0 || text != YAML::Dump(root)) {
-    YAML::Emitter out;
-    out << root;
-    text = out.c_str();
-    if (node_params.size() > 0) file += " with parameters";
-  }
-  return parse_pipeline_config(text, file, registry);
+  // Unchanged, the text is parsed as given, so its messages name the file's own lines.
+  if (!changed) return parse_pipeline_config(text, file, registry);
+  YAML::Emitter out;
+  out << root;
+  return parse_pipeline_config(out.c_str(), file + " with parameters", registry);
 }
 
 // What run() made: the files of the model's folder, in memory, and its summary row.

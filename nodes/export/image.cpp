@@ -4,7 +4,6 @@
 #include <jpeglib.h>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <csetjmp>
@@ -80,19 +79,6 @@ Image image_of_surface(const std::filesystem::path& path, const SurfacePtr& surf
   return image;
 }
 
-Image read_png(const std::filesystem::path& path, long max_pixels) {
-  std::array<unsigned char, 24> header{};
-  {
-    std::ifstream in(path, std::ios::binary);
-    if (!in.read(reinterpret_cast<char*>(header.data()), header.size()))
-      fail(path, "cannot read the PNG header");
-  }
-  check_png_header(path, header.data(), max_pixels);
-  const SurfacePtr surface(cairo_image_surface_create_from_png(path.c_str()),
-                           &cairo_surface_destroy);
-  return image_of_surface(path, surface);
-}
-
 // cairo's PNG stream reader over bytes in memory.
 struct MemoryReader {
   const std::vector<std::uint8_t>* bytes;
@@ -129,9 +115,8 @@ void on_jpeg_error(j_common_ptr info) {
   std::longjmp(error->jump, 1);
 }
 
-// Decodes from `file` when given, else from `bytes`.
-Image read_jpeg(const std::filesystem::path& path, std::FILE* file,
-                const std::vector<std::uint8_t>* bytes, long max_pixels) {
+Image decode_jpeg(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes,
+                  long max_pixels) {
   jpeg_decompress_struct info;
   JpegError error;
   info.err = jpeg_std_error(&error.manager);
@@ -144,10 +129,7 @@ Image read_jpeg(const std::filesystem::path& path, std::FILE* file,
     fail(path, std::string("cannot decode the JPEG: ") + error.message);
   }
   jpeg_create_decompress(&info);
-  if (file != nullptr)
-    jpeg_stdio_src(&info, file);
-  else
-    jpeg_mem_src(&info, bytes->data(), static_cast<unsigned long>(bytes->size()));
+  jpeg_mem_src(&info, bytes.data(), static_cast<unsigned long>(bytes.size()));
   jpeg_read_header(&info, TRUE);
   if (long(info.image_width) * long(info.image_height) > max_pixels) {
     too_large_width = info.image_width;
@@ -193,14 +175,14 @@ Image load_image(const std::filesystem::path& path, long max_pixels) {
   if (!std::filesystem::is_regular_file(path, ec)) fail(path, "no such file");
   std::string extension = path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".png") return read_png(path, max_pixels);
-  if (extension == ".jpg" || extension == ".jpeg") {
-    std::unique_ptr<std::FILE, decltype(&std::fclose)> file(std::fopen(path.c_str(), "rb"),
-                                                            &std::fclose);
-    if (!file) fail(path, "cannot open the file");
-    return read_jpeg(path, file.get(), nullptr, max_pixels);
-  }
-  fail(path, "unsupported image format " + extension + " (PNG and JPEG are read)");
+  const bool png = extension == ".png";
+  if (!png && extension != ".jpg" && extension != ".jpeg")
+    fail(path, "unsupported image format " + extension + " (PNG and JPEG are read)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open the file");
+  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
+                                        std::istreambuf_iterator<char>());
+  return png ? decode_png(path, bytes, max_pixels) : decode_jpeg(path, bytes, max_pixels);
 }
 
 Image decode_image(const std::string& name, const std::vector<std::uint8_t>& bytes,
@@ -209,7 +191,7 @@ Image decode_image(const std::string& name, const std::vector<std::uint8_t>& byt
       bytes[3] == 'G')
     return decode_png(name, bytes, max_pixels);
   if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff)
-    return read_jpeg(name, nullptr, &bytes, max_pixels);
+    return decode_jpeg(name, bytes, max_pixels);
   fail(name, "unsupported image format (PNG and JPEG are read)");
 }
 

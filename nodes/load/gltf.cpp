@@ -102,8 +102,21 @@ class SceneReader {
     for (int root : roots) read_node(root, Eigen::Matrix4d::Identity(), 0);
   }
 
+  /// Colours and materials once every primitive is read: kept only where some primitive had
+  /// them, so a plain grey model gets no appearance.
+  void finish() {
+    if (any_colour_) {
+      raw_.vertex_colour = std::move(vertex_colour_);
+      raw_.vertex_has_colour.assign(raw_.vertex_colour.size(), 1);
+    }
+    if (!raw_.materials.empty()) raw_.face_material = std::move(face_material_);
+    if (std::count(raw_.face_has_uv.begin(), raw_.face_has_uv.end(), 1) == 0) {
+      raw_.face_has_uv.clear();
+      raw_.corner_uv.clear();
+    }
+  }
+
   std::uint64_t skipped_primitives = 0;
-  bool any_colour = false;
 
  private:
   static constexpr int kMaxDepth = 64;
@@ -330,8 +343,8 @@ class SceneReader {
       if (coloured)
         for (int k = 0; k < 3; ++k) c[k] *= colour.value(v, k);
       vertex_colour_.push_back(c);
-      any_colour = any_colour || coloured || look.factor != Vec3d(1.0, 1.0, 1.0);
     }
+    any_colour_ = any_colour_ || coloured || look.factor != Vec3d(1.0, 1.0, 1.0);
     const bool mirrored = linear.determinant() < 0;
     for (auto triangle : triangles_of(primitive, positions.count)) {
       if (mirrored) std::swap(triangle[1], triangle[2]);
@@ -346,22 +359,6 @@ class SceneReader {
     }
   }
 
- public:
-  /// Colours and materials once every primitive is read: kept only where some primitive had
-  /// them, so a plain grey model gets no appearance.
-  void finish() {
-    if (any_colour) {
-      raw_.vertex_colour = std::move(vertex_colour_);
-      raw_.vertex_has_colour.assign(raw_.vertex_colour.size(), 1);
-    }
-    if (!raw_.materials.empty()) raw_.face_material = std::move(face_material_);
-    if (std::count(raw_.face_has_uv.begin(), raw_.face_has_uv.end(), 1) == 0) {
-      raw_.face_has_uv.clear();
-      raw_.corner_uv.clear();
-    }
-  }
-
- private:
   const tinygltf::Model& model_;
   const std::filesystem::path& path_;
   const std::string& file_;
@@ -369,6 +366,7 @@ class SceneReader {
   std::map<int, int> material_of_image_;
   std::vector<Vec3d> vertex_colour_;
   std::vector<int> face_material_;
+  bool any_colour_ = false;  // some primitive has COLOR_0 or a base-colour factor
 };
 
 }  // namespace
@@ -399,13 +397,7 @@ Prescan read_gltf(const std::filesystem::path& path, const std::string& file,
   reader.read_scene();
   reader.finish();
 
-  Prescan scan;
-  scan.format = Format::gltf;
-  scan.read_natively = true;
-  scan.vertices = raw.positions.size();
-  scan.faces = raw.n_faces();
-  scan.corners = raw.corners.size();
-  check_counts(file, scan.vertices, scan.faces, options);
+  const Prescan scan = natively_read(Format::gltf, raw, file, options);
   if (scan.faces == 0) {
     throw_invalid(file, "has no triangles" +
                             (reader.skipped_primitives > 0

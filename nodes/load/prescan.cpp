@@ -9,6 +9,18 @@
 
 namespace papercraft::load_internal {
 
+Prescan natively_read(Format format, const RawMesh& raw, const std::string& file,
+                      const LoadOptions& options) {
+  Prescan scan;
+  scan.format = format;
+  scan.read_natively = true;
+  scan.vertices = raw.positions.size();
+  scan.faces = raw.n_faces();
+  scan.corners = raw.corners.size();
+  check_counts(file, scan.vertices, scan.faces, options);
+  return scan;
+}
+
 void check_counts(const std::string& file, std::uint64_t vertices, std::uint64_t faces,
                   const LoadOptions& options) {
   if (faces > options.max_faces) {

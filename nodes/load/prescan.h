@@ -46,6 +46,10 @@ void check_counts(const std::string& file, std::uint64_t vertices, std::uint64_t
 /// are `available` after it.
 void check_room(const std::string& file, const std::string& what, std::uint64_t needed,
                 std::uint64_t available);
+/// The Prescan of a file read natively into `raw` (the scene formats): its counts, checked as
+/// check_counts does.
+Prescan natively_read(Format format, const RawMesh& raw, const std::string& file,
+                      const LoadOptions& options);
 /// Throws InvalidInputException when the file has no faces.
 void check_some_faces(const std::string& file, const Prescan& scan);
 

@@ -32,6 +32,17 @@ Eigen::Affine3d affine_of(const MODELTRANSFORM& t) {
   return a;
 }
 
+// lib3mf's message for the last error of `instance`, or `otherwise`.
+std::string last_error(void* instance, const std::string& otherwise) {
+  DWORD code = 0;
+  LPCSTR message = nullptr;
+  if (instance != nullptr &&
+      lib3mf_getlasterror(static_cast<PLib3MFBase*>(instance), &code, &message) == LIB3MF_OK &&
+      message != nullptr && *message != '\0')
+    return message;
+  return otherwise;
+}
+
 Vec3d rgb(BYTE r, BYTE g, BYTE b) {
   return Vec3d(r / 255.0, g / 255.0, b / 255.0);
 }
@@ -53,30 +64,37 @@ class PackageReader {
       PLib3MFModelObjectResource* object = nullptr;
       check(lib3mf_builditem_getobjectresource(item, &object), item, "a build item's object");
       const Owned<void> owned_object(object);
-      Eigen::Affine3d transform = Eigen::Affine3d::Identity();
-      BOOL has = false;
-      if (lib3mf_builditem_hasobjecttransform(item, &has) == LIB3MF_OK && has) {
-        MODELTRANSFORM t;
-        check(lib3mf_builditem_getobjecttransform(item, &t), item, "a build item's transform");
-        transform = affine_of(t);
-      }
-      read_object(object, transform, 0);
+      read_object(object,
+                  transform_of(item, &lib3mf_builditem_hasobjecttransform,
+                               &lib3mf_builditem_getobjecttransform, "a build item's transform"),
+                  0);
     }
   }
 
-  bool any_colour = false;
+  void finish() {
+    if (any_colour_) {
+      raw_.face_colour = std::move(face_colour_);
+      raw_.face_has_colour.assign(raw_.face_colour.size(), 1);
+    }
+  }
 
  private:
   void check(LIB3MFRESULT result, void* instance, const std::string& what) const {
     if (result == LIB3MF_OK) return;
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    std::string why = "error " + std::to_string(result);
-    if (instance != nullptr &&
-        lib3mf_getlasterror(static_cast<PLib3MFBase*>(instance), &code, &message) == LIB3MF_OK &&
-        message != nullptr && *message != '\0')
-      why = message;
-    throw_invalid(file_, "cannot read " + what + ": " + why);
+    throw_invalid(file_, "cannot read " + what + ": " +
+                             last_error(instance, "error " + std::to_string(result)));
+  }
+
+  // The transform of a build item or component where it has one, else the identity.
+  template <class Instance>
+  Eigen::Affine3d transform_of(Instance* instance, LIB3MFRESULT (*has)(Instance*, BOOL*),
+                               LIB3MFRESULT (*get)(Instance*, MODELTRANSFORM*),
+                               const std::string& what) const {
+    BOOL present = false;
+    if (has(instance, &present) != LIB3MF_OK || !present) return Eigen::Affine3d::Identity();
+    MODELTRANSFORM t;
+    check(get(instance, &t), instance, what);
+    return affine_of(t);
   }
 
   void read_object(PLib3MFModelObjectResource* object, const Eigen::Affine3d& transform,
@@ -99,14 +117,11 @@ class PackageReader {
       check(lib3mf_component_getobjectresource(component, &child), component,
             "a component's object");
       const Owned<void> owned_child(child);
-      Eigen::Affine3d local = Eigen::Affine3d::Identity();
-      BOOL has = false;
-      if (lib3mf_component_hastransform(component, &has) == LIB3MF_OK && has) {
-        MODELTRANSFORM t;
-        check(lib3mf_component_gettransform(component, &t), component, "a component's transform");
-        local = affine_of(t);
-      }
-      read_object(child, transform * local, depth + 1);
+      read_object(child,
+                  transform * transform_of(component, &lib3mf_component_hastransform,
+                                           &lib3mf_component_gettransform,
+                                           "a component's transform"),
+                  depth + 1);
     }
   }
 
@@ -170,7 +185,7 @@ class PackageReader {
     }
     Vec3d fallback(0.5, 0.5, 0.5);
     const bool has_default = default_colour(mesh, &fallback);
-    any_colour = any_colour || has_default;
+    any_colour_ = any_colour_ || has_default;
     PLib3MFPropertyHandler* handler_raw = nullptr;
     if (lib3mf_meshobject_createpropertyhandler(mesh, &handler_raw) != LIB3MF_OK)
       handler_raw = nullptr;
@@ -205,7 +220,7 @@ class PackageReader {
           return fallback;
         }
       }
-      any_colour = true;
+      any_colour_ = true;
       Vec3d sum(0.0, 0.0, 0.0);
       for (const MODELMESHCOLOR_SRGB& c : colours[t].m_Colors)
         sum += rgb(c.m_Red, c.m_Green, c.m_Blue);
@@ -216,26 +231,18 @@ class PackageReader {
       Vec3d colour;
       if (lib3mf_propertyhandler_getbasematerial(handler, t, &group, &index) == LIB3MF_OK &&
           base_material_colour(group, index, &colour)) {
-        any_colour = true;
+        any_colour_ = true;
         return colour;
       }
     }
     return fallback;
   }
 
- public:
-  void finish() {
-    if (any_colour) {
-      raw_.face_colour = std::move(face_colour_);
-      raw_.face_has_colour.assign(raw_.face_colour.size(), 1);
-    }
-  }
-
- private:
   PLib3MFModel* model_;
   const std::string& file_;
   RawMesh& raw_;
   std::vector<Vec3d> face_colour_;
+  bool any_colour_ = false;  // some triangle or object has a colour
 };
 
 }  // namespace
@@ -250,26 +257,13 @@ Prescan read_3mf(const std::filesystem::path& path, const std::string& file,
   if (lib3mf_model_queryreader(model_raw, "3mf", &reader_raw) != LIB3MF_OK)
     throw_io(file, "lib3mf has no 3MF reader");
   const Owned<void> reader(reader_raw);
-  if (lib3mf_reader_readfromfileutf8(reader_raw, path.c_str()) != LIB3MF_OK) {
-    DWORD code = 0;
-    LPCSTR message = nullptr;
-    std::string why = "lib3mf refused it";
-    if (lib3mf_getlasterror(reader_raw, &code, &message) == LIB3MF_OK && message != nullptr &&
-        *message != '\0')
-      why = message;
-    throw_invalid(file, "not a readable 3MF package: " + why);
-  }
+  if (lib3mf_reader_readfromfileutf8(reader_raw, path.c_str()) != LIB3MF_OK)
+    throw_invalid(file, "not a readable 3MF package: " + last_error(reader_raw, "lib3mf refused it"));
   PackageReader package(model_raw, file, raw);
   package.read_build();
   package.finish();
 
-  Prescan scan;
-  scan.format = Format::threemf;
-  scan.read_natively = true;
-  scan.vertices = raw.positions.size();
-  scan.faces = raw.n_faces();
-  scan.corners = raw.corners.size();
-  check_counts(file, scan.vertices, scan.faces, options);
+  const Prescan scan = natively_read(Format::threemf, raw, file, options);
   if (scan.faces == 0) throw_invalid(file, "has no triangles (no mesh object in its build)");
   return scan;
 }

@@ -12,6 +12,7 @@ OSError. The GIL is released while a mesh loads and while the pipeline runs.
 """
 
 import json as _json
+import os as _os
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional
 
@@ -88,7 +89,7 @@ class Result:
         run.jsonl) into folder, as `papercraft run --out folder` does; returns the model's
         folder."""
         self._output.write(str(folder))
-        return str(folder) + "/" + self.name
+        return _os.path.join(str(folder), self.name)
 
 
 def _strip(s: Dict[str, Any]) -> Strip:

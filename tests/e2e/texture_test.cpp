@@ -5,6 +5,10 @@
 
 #include <cairo.h>
 #include <gtest/gtest.h>
+// clang-format off
+#include <cstdio>
+#include <jpeglib.h>
+// clang-format on
 
 #include <algorithm>
 #include <cmath>
@@ -48,6 +52,37 @@ void write_png(const std::filesystem::path& path, int width, int height,
   cairo_surface_mark_dirty(image);
   ASSERT_EQ(cairo_surface_write_to_png(image, path.c_str()), CAIRO_STATUS_SUCCESS);
   cairo_surface_destroy(image);
+}
+
+// The same pixels as a JPEG (quality 95), through libjpeg.
+void write_jpeg(const std::filesystem::path& path, int width, int height,
+                const std::function<Rgb(int, int)>& colour) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(file, nullptr);
+  jpeg_compress_struct info;
+  jpeg_error_mgr error;
+  info.err = jpeg_std_error(&error);
+  jpeg_create_compress(&info);
+  jpeg_stdio_dest(&info, file);
+  info.image_width = width;
+  info.image_height = height;
+  info.input_components = 3;
+  info.in_color_space = JCS_RGB;
+  jpeg_set_defaults(&info);
+  jpeg_set_quality(&info, 95, TRUE);
+  jpeg_start_compress(&info, TRUE);
+  std::vector<unsigned char> row(3 * width);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Rgb c = colour(x, y);
+      row[3 * x] = c.r, row[3 * x + 1] = c.g, row[3 * x + 2] = c.b;
+    }
+    JSAMPROW pointer = row.data();
+    jpeg_write_scanlines(&info, &pointer, 1);
+  }
+  jpeg_finish_compress(&info);
+  jpeg_destroy_compress(&info);
+  std::fclose(file);
 }
 
 struct Ppm {
@@ -212,6 +247,17 @@ testing::PipelineOutput run_file(const std::filesystem::path& input, const std::
 constexpr Rgb kSideColours[6] = {{220, 40, 40},  {40, 180, 60},  {40, 70, 220},
                                  {230, 200, 40}, {200, 60, 200}, {40, 200, 210}};
 
+// The colour of the atlas box (testing::atlas_box) at a point of its surface: its side's
+// colour; undecided within 0.1 of an edge.
+std::optional<Rgb> atlas_box_colour(const Vec3& p) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(p[k]) > std::abs(p[axis])) axis = k;
+  for (int k = 0; k < 3; ++k)
+    if (k != axis && std::abs(p[k]) > 0.9) return std::nullopt;
+  return kSideColours[2 * axis + (p[axis] > 0 ? 1 : 0)];
+}
+
 // A cube whose six faces are separate UV islands of one atlas, each a solid colour: the
 // cells of a 3 x 2 grid, so every cube edge is a UV seam.
 TEST(Texture, CubeOfSixUvIslandsPrintsEachFaceInItsColour) {
@@ -219,35 +265,7 @@ TEST(Texture, CubeOfSixUvIslandsPrintsEachFaceInItsColour) {
   write_png(dir / "atlas.png", 96, 64,
             [](int x, int y) { return kSideColours[(y / 32) * 3 + x / 32]; });
   std::ofstream(dir / "cube.mtl") << "newmtl atlas\nmap_Kd atlas.png\n";
-  const TriangleMesh box = generate_shape("box", {{"size_x", 2}, {"size_y", 2}, {"size_z", 2}});
-  auto side_of = [](const Vec3& n) {
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
-    return 2 * axis + (n[axis] > 0 ? 1 : 0);
-  };
-  std::ofstream obj(dir / "cube.obj");
-  obj.precision(17);
-  obj << "mtllib cube.mtl\nusemtl atlas\n";
-  for (const Vec3& p : box.vertices) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  int vt = 0;
-  for (const Triangle& t : box.triangles) {
-    const Vec3 n =
-        (box.vertices[t[1]] - box.vertices[t[0]]).cross(box.vertices[t[2]] - box.vertices[t[0]]);
-    const int side = side_of(n), axis = side / 2;
-    const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-    // The island of this side: its cell of the atlas, a margin inside it.
-    const double cell_u = (side % 3) / 3.0, cell_v = 1.0 - (side / 3 + 1) / 2.0;
-    for (int v : t) {
-      const Vec3& p = box.vertices[v];
-      obj << "vt " << cell_u + (0.05 + 0.9 * (p[u_axis] + 1) / 2) / 3.0 << ' '
-          << cell_v + (0.05 + 0.9 * (p[v_axis] + 1) / 2) / 2.0 << '\n';
-    }
-    obj << "f " << t[0] + 1 << '/' << vt + 1 << ' ' << t[1] + 1 << '/' << vt + 2 << ' ' << t[2] + 1
-        << '/' << vt + 3 << '\n';
-    vt += 3;
-  }
-  obj.close();
+  testing::write_obj(dir / "cube.obj", testing::atlas_box(), "mtllib cube.mtl\nusemtl atlas\n");
   const auto out = run_file(dir / "cube.obj", "2%");
   ASSERT_TRUE(out.result.ok) << out.result.error;
   // report.json says what was baked: one image per printed piece, and what it cost.
@@ -257,18 +275,28 @@ TEST(Texture, CubeOfSixUvIslandsPrintsEachFaceInItsColour) {
   EXPECT_GT(texture.at("bake_seconds").get<double>(), 0.0);
   EXPECT_GT(texture.at("bake_cpu_seconds").get<double>(), 0.0);
   if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
-  const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
-    // The side the point lies on; undecided within 0.1 of an edge.
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::abs(p[k]) > std::abs(p[axis])) axis = k;
-    for (int k = 0; k < 3; ++k)
-      if (k != axis && std::abs(p[k]) > 0.9) return std::nullopt;
-    return kSideColours[2 * axis + (p[axis] > 0 ? 1 : 0)];
-  });
+  const Checked checked = check_printed_colours(out.dir, atlas_box_colour);
   EXPECT_GT(checked.sampled, 50) << checked;
   EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
   std::cout << "[ colours  ] " << checked << "\n";
+}
+
+// The atlas cube with a JPEG texture.
+TEST(Texture, JpegTexturePrintsEachFaceInItsColour) {
+  const auto dir = testing::fresh_temp_dir("atlas_jpeg");
+  write_jpeg(dir / "atlas.jpg", 96, 64,
+             [](int x, int y) { return kSideColours[(y / 32) * 3 + x / 32]; });
+  std::ofstream(dir / "cube.mtl") << "newmtl atlas\nmap_Kd atlas.jpg\n";
+  testing::write_obj(dir / "cube.obj", testing::atlas_box(), "mtllib cube.mtl\nusemtl atlas\n");
+  const auto out = run_file(dir / "cube.obj", "2%");
+  ASSERT_TRUE(out.result.ok) << out.result.error;
+  EXPECT_GE(out.report.at("texture").at("baked_images").get<int>(), 1);
+  EXPECT_TRUE(out.report.at("notes").dump().find("not printed") == std::string::npos)
+      << out.report.at("notes");
+  if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
+  const Checked checked = check_printed_colours(out.dir, atlas_box_colour);
+  EXPECT_GT(checked.sampled, 50) << checked;
+  EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
 }
 
 // The same atlas cube as a GLB with the PNG inside it: the image the GLB holds is printed.
@@ -276,46 +304,18 @@ TEST(Texture, GlbWithItsEmbeddedTexturePrintsEachFaceInItsColour) {
   const auto dir = testing::fresh_temp_dir("atlas_glb");
   write_png(dir / "atlas.png", 96, 64,
             [](int x, int y) { return kSideColours[(y / 32) * 3 + x / 32]; });
-  const TriangleMesh box = generate_shape("box", {{"size_x", 2}, {"size_y", 2}, {"size_z", 2}});
-  testing::SceneMesh mesh;
-  mesh.positions = box.vertices;
-  for (const Triangle& t : box.triangles) {
-    mesh.triangles.push_back({t[0], t[1], t[2]});
-    const Vec3 n =
-        (box.vertices[t[1]] - box.vertices[t[0]]).cross(box.vertices[t[2]] - box.vertices[t[0]]);
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
-    const int side = 2 * axis + (n[axis] > 0 ? 1 : 0);
-    const int u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
-    const double cell_u = (side % 3) / 3.0, cell_v = 1.0 - (side / 3 + 1) / 2.0;
-    std::array<Vec2, 3> uv;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& p = box.vertices[t[k]];
-      uv[k] = Vec2(cell_u + (0.05 + 0.9 * (p[u_axis] + 1) / 2) / 3.0,
-                   cell_v + (0.05 + 0.9 * (p[v_axis] + 1) / 2) / 2.0);
-    }
-    mesh.corner_uv.push_back(uv);
-  }
   testing::GltfOptions options;
   {
     std::ifstream png(dir / "atlas.png", std::ios::binary);
     options.png.assign(std::istreambuf_iterator<char>(png), {});
   }
   std::filesystem::remove(dir / "atlas.png");  // only the copy inside the GLB is left
-  ASSERT_TRUE(testing::write_gltf(dir / "cube.glb", mesh, options));
+  ASSERT_TRUE(testing::write_gltf(dir / "cube.glb", testing::atlas_box(), options));
   const auto out = run_file(dir / "cube.glb", "2%");
   ASSERT_TRUE(out.result.ok) << out.result.error;
   EXPECT_GE(out.report.at("texture").at("baked_images").get<int>(), 1);
   if (std::system("command -v pdftoppm > /dev/null 2>&1") != 0) GTEST_SKIP() << "no pdftoppm";
-  const Checked checked = check_printed_colours(out.dir, [&](const Vec3& p) -> std::optional<Rgb> {
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::abs(p[k]) > std::abs(p[axis])) axis = k;
-    for (int k = 0; k < 3; ++k)
-      if (k != axis && std::abs(p[k]) > 0.9) return std::nullopt;
-    return kSideColours[2 * axis + (p[axis] > 0 ? 1 : 0)];
-  });
+  const Checked checked = check_printed_colours(out.dir, atlas_box_colour);
   EXPECT_GT(checked.sampled, 50) << checked;
   EXPECT_GE(checked.matching, 0.99 * checked.sampled) << checked;
 }

@@ -9,7 +9,6 @@
 #include <set>
 
 #include "core/errors.h"
-#include "core/generate.h"
 #include "nodes/load/openmesh.h"
 #include "support/scene_writers.h"
 #include "support/temp_dir.h"
@@ -19,42 +18,15 @@ namespace {
 
 using testing::SceneMesh;
 
-// The box with per-corner UVs (each side an island of a 3 x 2 atlas) and a colour per side.
+// The atlas box with a colour per side, for the 3MF.
 SceneMesh textured_box() {
-  const TriangleMesh box = generate_shape("box", {{"size_x", 2}, {"size_y", 2}, {"size_z", 2}});
-  SceneMesh mesh;
-  mesh.positions = box.vertices;
-  for (const Triangle& t : box.triangles) {
-    mesh.triangles.push_back({t[0], t[1], t[2]});
-    const Vec3 n =
-        (box.vertices[t[1]] - box.vertices[t[0]]).cross(box.vertices[t[2]] - box.vertices[t[0]]);
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
-    const int side = 2 * axis + (n[axis] > 0 ? 1 : 0);
-    std::array<Vec2, 3> uv;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3& p = box.vertices[t[k]];
-      uv[k] = Vec2((side % 3 + 0.05 + 0.9 * (p[(axis + 1) % 3] + 1) / 2) / 3.0,
-                   (side / 3 + 0.05 + 0.9 * (p[(axis + 2) % 3] + 1) / 2) / 2.0);
-    }
-    mesh.corner_uv.push_back(uv);
+  SceneMesh mesh = testing::atlas_box();
+  for (const auto& t : mesh.triangles) {
+    const int side = testing::box_side((mesh.positions[t[1]] - mesh.positions[t[0]])
+                                           .cross(mesh.positions[t[2]] - mesh.positions[t[0]]));
     mesh.triangle_colour.push_back({static_cast<unsigned char>(40 * side), 200, 100});
   }
   return mesh;
-}
-
-void write_obj(const std::filesystem::path& path, const SceneMesh& mesh) {
-  std::ofstream obj(path);
-  obj.precision(17);
-  for (const Vec3& p : mesh.positions) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
-  for (const auto& uv : mesh.corner_uv)
-    for (const Vec2& c : uv) obj << "vt " << c.x() << ' ' << c.y() << '\n';
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    obj << 'f';
-    for (int k = 0; k < 3; ++k) obj << ' ' << mesh.triangles[t][k] + 1 << '/' << 3 * t + k + 1;
-    obj << '\n';
-  }
 }
 
 std::vector<std::uint8_t> tiny_png() {
@@ -95,7 +67,7 @@ std::set<std::array<Corner, 3>> faces_of(const LoadedMesh& loaded) {
 TEST(SceneFormats, GlbGltfAnd3mfLoadToTheSameTrianglesAsTheObj) {
   const auto dir = testing::fresh_temp_dir("scene_formats");
   const SceneMesh box = textured_box();
-  write_obj(dir / "box.obj", box);
+  testing::write_obj(dir / "box.obj", box);
   testing::GltfOptions glb;
   glb.png = tiny_png();
   ASSERT_TRUE(testing::write_gltf(dir / "box.glb", box, glb));

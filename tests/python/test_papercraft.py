@@ -111,8 +111,9 @@ def test_the_loaders_errors_are_value_errors(tmp_path):
         papercraft.load(bad)
     with pytest.raises(OSError, match="no such file"):
         papercraft.load(tmp_path / "missing.obj")
-    # A mesh the loader refuses (a non-manifold fan of three faces on one edge, repair off).
-    with pytest.raises(ValueError):
+    # A mesh the loader refuses (a face written twice, repair off): the loader's message, the
+    # mesh named <arrays>.
+    with pytest.raises(ValueError, match="<arrays>.*duplicate"):
         papercraft.run(np.eye(3), np.array([[0, 1, 2], [0, 1, 2]]), **{"load.repair": False})
 
 

@@ -8,12 +8,15 @@
 #include <tiny_gltf.h>
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/generate.h"
 #include "core/triangle_mesh.h"
 
 namespace papercraft::testing {
@@ -26,6 +29,58 @@ struct SceneMesh {
   /// Per triangle an sRGB colour (3MF) or none.
   std::vector<std::array<unsigned char, 3>> triangle_colour;
 };
+
+/// The side of an axis-aligned box a face with normal `n` lies on: 2 * axis + (n points up).
+inline int box_side(const Vec3& n) {
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(n[k]) > std::abs(n[axis])) axis = k;
+  return 2 * axis + (n[axis] > 0 ? 1 : 0);
+}
+
+/// The generated 2 x 2 x 2 box with a texture atlas: each of its six sides a UV island, the
+/// cell (side % 3, side / 3) of a 3 x 2 grid with a margin inside it, so every cube edge is a
+/// UV seam.
+inline SceneMesh atlas_box() {
+  const TriangleMesh box = generate_shape("box", {{"size_x", 2}, {"size_y", 2}, {"size_z", 2}});
+  SceneMesh mesh;
+  mesh.positions = box.vertices;
+  for (const Triangle& t : box.triangles) {
+    mesh.triangles.push_back({t[0], t[1], t[2]});
+    const int side =
+        box_side((box.vertices[t[1]] - box.vertices[t[0]]).cross(box.vertices[t[2]] - box.vertices[t[0]]));
+    const int axis = side / 2, u_axis = (axis + 1) % 3, v_axis = (axis + 2) % 3;
+    const double cell_u = (side % 3) / 3.0, cell_v = 1.0 - (side / 3 + 1) / 2.0;
+    std::array<Vec2, 3> uv;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = box.vertices[t[k]];
+      uv[k] = Vec2(cell_u + (0.05 + 0.9 * (p[u_axis] + 1) / 2) / 3.0,
+                   cell_v + (0.05 + 0.9 * (p[v_axis] + 1) / 2) / 2.0);
+    }
+    mesh.corner_uv.push_back(uv);
+  }
+  return mesh;
+}
+
+/// Writes `mesh` as an OBJ after `header` (e.g. its mtllib and usemtl lines): shared vertices,
+/// a vt per corner where it has UVs.
+inline void write_obj(const std::filesystem::path& path, const SceneMesh& mesh,
+                      const std::string& header = "") {
+  std::ofstream obj(path);
+  obj.precision(17);
+  obj << header;
+  for (const Vec3& p : mesh.positions) obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (const auto& uv : mesh.corner_uv)
+    for (const Vec2& c : uv) obj << "vt " << c.x() << ' ' << c.y() << '\n';
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    obj << 'f';
+    for (int k = 0; k < 3; ++k) {
+      obj << ' ' << mesh.triangles[t][k] + 1;
+      if (!mesh.corner_uv.empty()) obj << '/' << 3 * t + k + 1;
+    }
+    obj << '\n';
+  }
+}
 
 struct GltfOptions {
   bool binary = true;  // .glb; else .gltf with a .bin beside it
