@@ -1054,6 +1054,8 @@ std::string label_key(const StripData& data, const Piece& piece, const std::vect
     put(loop.size());
     for (const PieceEdge& e : loop) {
       put(e.v0), put(e.v1), put(e.kind), put(e.flap), put(e.flap_first);
+      put(e.edge_flaps.size());
+      for (int f : e.edge_flaps) put(f);
       put_text(e.label);
       put_text(e.printed);
     }

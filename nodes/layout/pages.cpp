@@ -25,7 +25,7 @@
 #include "nodes/layout/rectangle_packing.h"
 #include "nodes/layout/seam_pairing.h"
 #include "nodes/layout/split_to_fit.h"
-#include "nodes/layout/tabs.h"
+#include "nodes/layout/tab_styles.h"
 
 namespace papercraft {
 
@@ -116,6 +116,7 @@ void validate_options(const LayoutOptions& o) {
   non_negative(o.footer_mm, "footer_mm");
   if (!(o.tab_angle_degrees > 0 && o.tab_angle_degrees <= 90))
     throw InvalidInputException("layout option tab_angle_degrees must be in (0, 90]");
+  positive(o.alternate_run_mm, "alternate_run_mm");
   if (!(o.scale > 0) && !(o.height_mm > 0))
     throw InvalidInputException("layout needs height_mm > 0 or scale > 0");
   if (o.splits_per_page < 1)
@@ -125,7 +126,7 @@ void validate_options(const LayoutOptions& o) {
 // Room kept around a piece for its tabs while splitting: a flap stays within its height of
 // the seam but for the mitres at joints of up to 15 degrees and its short angled ends.
 double tab_reserve_for(const LayoutOptions& o) {
-  return 1.15 * o.tab_width_mm;
+  return o.tab_style == TabStyle::None ? 0.0 : 1.15 * o.tab_width_mm;
 }
 
 // The printable area less the footer (and the gap above it).
@@ -330,21 +331,26 @@ PlacedPiece place_piece_at(const StripData& data, const Piece& piece, const Orie
     for (const PieceEdge& e : loop) {
       const Vec2 a = to_page(data.points[e.v0]), b = to_page(data.points[e.v1]);
       outline.push_back(a);
-      if (e.flap < 0) {
+      if (e.flap >= 0) {
+        // Around a flap over several edges, from its first edge's start.
+        if (e.flap_first) {
+          cut.push_back(a);
+          for (const Vec2& q : piece.flaps[e.flap].outer) cut.push_back(to_page(q));
+        }
+      } else {
+        // Around the flaps on this edge alone; one on part of it starts and ends on the edge.
         cut.push_back(a);
-      } else if (e.flap_first) {
-        // Around the flap; one on part of its edge starts and ends on the edge.
-        // (A flap on part of an edge is a flap on that edge alone: its base has two points.)
-        const Flap& flap = piece.flaps[e.flap];
-        const bool partial = flap.base.size() == 2;
-        cut.push_back(a);
-        if (partial && (flap.base.front() - data.points[e.v0]).norm() > 1e-9)
-          cut.push_back(to_page(flap.base.front()));
-        for (const Vec2& q : flap.outer) cut.push_back(to_page(q));
-        if (partial && (flap.base.back() - data.points[e.v1]).norm() > 1e-9)
-          cut.push_back(to_page(flap.base.back()));
+        for (const int f : e.edge_flaps) {
+          const Flap& flap = piece.flaps[f];
+          if ((flap.base.front() - data.points[e.v0]).norm() > 1e-9)
+            cut.push_back(to_page(flap.base.front()));
+          for (const Vec2& q : flap.outer) cut.push_back(to_page(q));
+          if ((flap.base.back() - data.points[e.v1]).norm() > 1e-9)
+            cut.push_back(to_page(flap.base.back()));
+        }
       }
-      placed.edges.push_back({a, b, e.kind, e.printed, e.flap >= 0});
+      placed.edges.push_back(
+          {a, b, e.kind, e.printed, e.flap >= 0 || !e.edge_flaps.empty()});
     }
     placed.outline.push_back(std::move(outline));
     placed.cut_outline.push_back(std::move(cut));
@@ -784,7 +790,8 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
       add_alignment_marks(p.strips[piece.strip], piece, chain, options.alignment_mark_mm);
     }
   }
-  if (options.tab_width_mm > 0) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);
+  const bool tabs = options.tab_width_mm > 0 && options.tab_style != TabStyle::None;
+  if (tabs) add_tabs(pieces, p.strips, chains, pairs, seams, options, warnings);
   for (const SeamPair& pair : pairs) {
     const int a = chains[pair.first].piece;
     const int b = pair.second >= 0 ? chains[pair.second].piece : -1;
@@ -798,7 +805,7 @@ PatternLayout layout_with(const std::vector<FlatStrip>& strips, const LayoutOpti
   }
   // Seams with room for a tab on neither side are glued with a joining strip behind them.
   std::deque<FlatStrip> joint_strips;  // the strips' storage (StripData points into it)
-  if (options.joining_strips && options.tab_width_mm > 0) {
+  if (options.joining_strips && tabs) {
     int next_id = 0;
     for (const FlatStrip& strip : strips) next_id = std::max(next_id, strip.id + 1);
     const std::size_t model_pieces = pieces.size();

@@ -20,10 +20,12 @@
 //   less than strong_fold_angle_degrees is `gentle`: a smooth strip bends a little at
 //   every ruling, and those lines only tell a person to curve the paper there, so
 //   exporters draw them faint and short (see nodes/export/pattern_drawing.h).
-// - Tabs go on one side of every seam: the side whose piece comes first in order
-//   (strip id, piece index, position on the piece's boundary). If that side has no room
-//   (the tab would cover its own piece or another tab even when shrunk), the other side
-//   gets it.
+// - Tabs (TabStyle One, the default) go on one side of every seam: the side whose piece
+//   comes first in order (strip id, piece index, position on the piece's boundary). If that
+//   side has no room (the tab would cover its own piece or another tab even when shrunk),
+//   the other side gets it. Alternate, Both and None place them otherwise (see TabStyle);
+//   a tab narrows where the outline leaves less room and never covers its own piece or
+//   another tab of it.
 //
 // Example (node config): layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}}
 
@@ -52,6 +54,14 @@ enum class PackingMethod {
   Shelf,     // next-fit decreasing height shelves (the plain baseline)
 };
 
+/// Where a seam's glue tabs go.
+enum class TabStyle {
+  One,        // one side of every seam (the other side takes what the first has no room for)
+  Alternate,  // along a seam, runs of about alternate_run_mm alternate between the two sides
+  Both,       // a tab on each side of every seam; the partner is glued over it
+  None,       // no tabs (and no joining strips); seams are still labelled and marked
+};
+
 struct LayoutOptions {
   PageSize page;
   double margin_mm = 10.0;
@@ -62,7 +72,11 @@ struct LayoutOptions {
   /// Millimetres per model unit; when > 0 it overrides height_mm.
   double scale = 0.0;
   double tab_width_mm = 5.0;        // 0: no tabs
-  double tab_angle_degrees = 45.0;  // angle between a tab's ends and its seam edge
+  double tab_angle_degrees = 45.0;  // angle between a tab's ends and its seam edge, (0, 90]
+  TabStyle tab_style = TabStyle::One;
+  /// Alternate: the length (mm) of the runs whose tabs change sides along a seam; a seam
+  /// shorter than 1.5 runs is one run (as TabStyle::One).
+  double alternate_run_mm = 40.0;
   /// A seam with room for a tab on neither side (a narrow slit, a tiny seam in a notch) gets
   /// a joining strip instead: a loose strip 2 x tab_width_mm wide, named by the seam's label,
   /// glued behind both sides (Page::joints).

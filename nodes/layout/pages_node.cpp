@@ -39,7 +39,24 @@ ParamTable<O> layout_table(bool nesting) {
               "blank border on every side of a page", at_least(0))
           .add(
               "tab_width_mm", [](O & o) -> auto& { return o.tab_width_mm; },
-              "glue tab width (0: no tabs)", at_least(0))
+              "glue tab width (0: no tabs); a tab narrows where its piece leaves less room",
+              at_least(0))
+          .add(
+              "tab_angle_degrees", [](O & o) -> auto& { return o.tab_angle_degrees; },
+              "angle between a tab's ends and its seam (90: rectangular tabs)",
+              ParamRange{0.0, 90.0, true, false})
+          .choice(
+              "tab_style", [](O & o) -> auto& { return o.tab_style; },
+              std::vector<std::pair<std::string, TabStyle>>{{"one", TabStyle::One},
+                                                            {"alternate", TabStyle::Alternate},
+                                                            {"both", TabStyle::Both},
+                                                            {"none", TabStyle::None}},
+              "one (one side of each seam), alternate (sides alternate along a seam every "
+              "alternate_run_mm), both (each side; the partner glues over it) or none (no tabs)")
+          .add(
+              "alternate_run_mm", [](O & o) -> auto& { return o.alternate_run_mm; },
+              "tab_style alternate: length of the runs whose tabs change sides along a seam",
+              greater_than(0))
           .add(
               "joining_strips", [](O & o) -> auto& { return o.joining_strips; },
               "a seam with room for a tab on neither side gets a loose strip glued behind both "

@@ -36,8 +36,9 @@ struct PieceEdge {
   EdgeKind kind = EdgeKind::Cut;
   std::string label;    // as given (or a split's label)
   std::string printed;  // as printed
-  int flap = -1;        // index into Piece::flaps covering this edge
+  int flap = -1;        // index into Piece::flaps: a flap over several edges covering this one
   bool flap_first = false;
+  std::vector<int> edge_flaps;  // flaps on this edge alone (all of it or parts), in order along it
 };
 
 /// One flap of a tab: a polygon on a nearly straight run of seam edges, in the strip frame.

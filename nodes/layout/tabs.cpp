@@ -1,4 +1,4 @@
-// Glue tabs: flaps planned along seam chains, the side with room chosen, texture across the seam.
+// Glue tabs: flaps planned along seam chains, kept clear of their piece, textured across the seam.
 #include "nodes/layout/tabs.h"
 
 #include <algorithm>
@@ -6,7 +6,6 @@
 #include <functional>
 #include <numbers>
 #include <optional>
-#include <tuple>
 #include <utility>
 
 #include "core/edge_map.h"
@@ -71,18 +70,12 @@ std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double
   return slices;
 }
 
-struct FlapPlan {
-  std::vector<int> edges;  // loop edge indices, in order
-  std::vector<Vec2> base;
-  std::vector<Vec2> outer;
-  std::vector<std::vector<Vec2>> slices;
-  std::vector<int> slice_edges;  // index into `edges` of each slice's base edge
-};
-
 // Flaps along a chain: one per nearly straight run of edges (a flap cannot fold along a
-// bend), each as high as fits up to the tab width, dropped where none fits.
+// bend), each as high as fits up to the tab width, dropped where none fits. With `part`
+// (t0, t1), the chain is one edge and its one flap lies on that part of it.
 std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, const Chain& chain,
-                                 const TabGeometry& geometry, PieceShapes& shapes) {
+                                 const TabGeometry& geometry, PieceShapes& shapes,
+                                 const std::pair<double, double>* part = nullptr) {
   const std::vector<PieceEdge>& loop = piece.loops[chain.loop];
   const int n = static_cast<int>(loop.size());
   std::vector<int> edges;
@@ -190,9 +183,22 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
       }
       return false;
     };
+    if (part) {
+      const Vec2 a = plan.base.front(), b = plan.base.back();
+      const auto [t0, t1] = *part;
+      for (const double base_angle : {geometry.angle, 60 * kDegree, 75 * kDegree}) {
+        if (base_angle < geometry.angle || !plan.slices.empty()) continue;
+        const double start_angle = t0 > 0 ? base_angle : end_angle(true, base_angle);
+        const double stop_angle = t1 < 1 ? base_angle : end_angle(false, base_angle);
+        if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) break;
+        try_base({a + t0 * (b - a), a + t1 * (b - a)}, (t1 - t0) * length, start_angle,
+                 stop_angle);
+      }
+    }
     // The configured angle first; a seam too short for a flap of the smallest height at that
     // angle gets steeper ends (a taller flap on the same base).
     for (const double base_angle : {geometry.angle, 60 * kDegree, 75 * kDegree}) {
+      if (part) break;
       if (base_angle < geometry.angle || !plan.slices.empty()) continue;
       const double start_angle = end_angle(true, base_angle);
       const double stop_angle = end_angle(false, base_angle);
@@ -202,7 +208,7 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
     // A single edge with no room along its whole length (one side of a narrow V, a seam
     // running into a notch) takes a flap on part of it: the halves, then quarters, each end
     // first (where a V opens), the flap's own ends at the configured angle away from corners.
-    if (plan.slices.empty() && run.size() == 1 && length >= 4 * geometry.min_height) {
+    if (!part && plan.slices.empty() && run.size() == 1 && length >= 4 * geometry.min_height) {
       const Vec2 a = plan.base.front(), b = plan.base.back();
       for (const auto& [t0, t1] : std::initializer_list<std::pair<double, double>>{
                {0.5, 1.0}, {0.0, 0.5}, {0.75, 1.0}, {0.0, 0.25}, {0.25, 0.75}}) {
@@ -242,6 +248,16 @@ void commit_flaps(Piece& piece, const Chain& chain, const std::string& printed,
       }
     piece.flaps.push_back(std::move(flap));
     tab.flaps.push_back(flap_index);
+    if (plan.edges.size() == 1) {
+      // Kept in order along the edge (the bases of its flaps all run along it).
+      std::vector<int>& on_edge = piece.loops[chain.loop][plan.edges[0]].edge_flaps;
+      const Vec2 along = plan.base.back() - plan.base.front();
+      auto at = [&](int f) { return along.dot(piece.flaps[f].base.front()); };
+      on_edge.insert(std::upper_bound(on_edge.begin(), on_edge.end(), flap_index,
+                                      [&](int a, int b) { return at(a) < at(b); }),
+                     flap_index);
+      continue;
+    }
     for (std::size_t i = 0; i < plan.edges.size(); ++i) {
       PieceEdge& edge = piece.loops[chain.loop][plan.edges[i]];
       edge.flap = flap_index;
@@ -249,14 +265,6 @@ void commit_flaps(Piece& piece, const Chain& chain, const std::string& printed,
     }
   }
   piece.tabs.push_back(std::move(tab));
-}
-
-using ChainKey = std::tuple<int, int, int, int>;
-
-ChainKey chain_key(const Chain& c, const std::vector<Piece>& pieces,
-                   const std::vector<StripData>& strips) {
-  const Piece& piece = pieces[c.piece];
-  return {strips[piece.strip].strip->id, piece.index, c.loop, c.start};
 }
 
 // The texture for a tab along loop edge `edge` of `piece`'s loop `loop`, the tab lying on
@@ -314,110 +322,124 @@ std::optional<TexturePatch> tab_texture(const std::vector<Piece>& pieces,
 
 }  // namespace
 
-void add_tabs(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
-              const std::vector<Chain>& chains, const std::vector<SeamPair>& pairs,
-              const SeamEdges& seams, const LayoutOptions& options,
-              std::vector<std::string>& warnings) {
-  const TabGeometry geometry{options.tab_width_mm, options.tab_angle_degrees * kDegree,
-                             std::min(1.0, 0.2 * options.tab_width_mm), 1e-6};
-  std::vector<std::optional<PieceShapes>> shapes(pieces.size());
-  auto shapes_of = [&](int piece) -> PieceShapes& {
-    if (!shapes[piece]) shapes[piece] = piece_shapes(strips[pieces[piece].strip], pieces[piece]);
-    return *shapes[piece];
-  };
-  // Flaps on a chain, and where a run of it takes none, on each of its edges alone (several
-  // small tabs along a curved or crowded seam).
-  auto plan = [&](const Chain& chain) {
-    const Piece& piece = pieces[chain.piece];
-    const StripData& data = strips[piece.strip];
-    PieceShapes& shapes_here = shapes_of(chain.piece);
-    const std::size_t before = shapes_here.slices.size();
-    std::vector<FlapPlan> plans = plan_flaps(data, piece, chain, geometry, shapes_here);
-    const int n = static_cast<int>(piece.loops[chain.loop].size());
-    std::vector<char> covered(n, 0);
-    for (const FlapPlan& p : plans)
-      for (int e : p.edges) covered[e] = 1;
-    for (int i = 0; i < chain.count; ++i) {
-      const int e = (chain.start + i) % n;
-      if (covered[e]) continue;
-      Chain single = chain;
-      single.start = e;
-      single.count = 1;
-      single.closed = false;
-      for (FlapPlan& p : plan_flaps(data, piece, single, geometry, shapes_here)) {
-        for (int f : p.edges) covered[f] = 1;
-        plans.push_back(std::move(p));
-      }
+TabPlanner::TabPlanner(std::vector<Piece>& pieces, const std::vector<StripData>& strips,
+                       const SeamEdges& seams, const LayoutOptions& options)
+    : pieces_(pieces),
+      strips_(strips),
+      seams_(seams),
+      width_(options.tab_width_mm),
+      angle_(options.tab_angle_degrees * kDegree),
+      min_height_(std::min(1.0, 0.2 * options.tab_width_mm)),
+      overlap_depth_(1e-6),
+      shapes_(pieces.size()) {}
+
+PieceShapes& TabPlanner::shapes_of(int piece) {
+  if (!shapes_[piece]) shapes_[piece] = piece_shapes(strips_[pieces_[piece].strip], pieces_[piece]);
+  return *shapes_[piece];
+}
+
+std::vector<FlapPlan> TabPlanner::plan(const Chain& chain) {
+  const TabGeometry geometry{width_, angle_, min_height_, overlap_depth_};
+  const Piece& piece = pieces_[chain.piece];
+  const StripData& data = strips_[piece.strip];
+  PieceShapes& shapes = shapes_of(chain.piece);
+  const std::size_t before = shapes.slices.size();
+  std::vector<FlapPlan> plans = plan_flaps(data, piece, chain, geometry, shapes);
+  // Where a run of the chain takes none, flaps on each of its edges alone (several small
+  // tabs along a curved or crowded seam).
+  const int n = static_cast<int>(piece.loops[chain.loop].size());
+  std::vector<char> covered(n, 0);
+  for (const FlapPlan& p : plans)
+    for (int e : p.edges) covered[e] = 1;
+  for (int i = 0; i < chain.count; ++i) {
+    const int e = (chain.start + i) % n;
+    if (covered[e]) continue;
+    Chain single = chain;
+    single.start = e;
+    single.count = 1;
+    single.closed = false;
+    for (FlapPlan& p : plan_flaps(data, piece, single, geometry, shapes)) {
+      for (int f : p.edges) covered[f] = 1;
+      plans.push_back(std::move(p));
     }
-    shapes_here.slices.resize(before);
-    shapes_here.slice_boxes.resize(before);
-    return plans;
-  };
-  auto accept = [&](const Chain& chain, std::vector<FlapPlan>& plans, const std::string& label) {
-    PieceShapes& shapes_here = shapes_of(chain.piece);
-    for (const FlapPlan& plan : plans)
-      for (const auto& slice : plan.slices) {
-        Box2 box;
-        for (const Vec2& c : slice) box.add(c);
-        shapes_here.slices.push_back(slice);
-        shapes_here.slice_boxes.push_back(box);
-      }
-    commit_flaps(pieces[chain.piece], chain, label, plans, [&](int edge) {
-      return tab_texture(pieces, strips, seams, chain.piece, chain.loop, edge);
-    });
-  };
-  for (const SeamPair& pair : pairs) {
-    std::vector<int> sides{pair.first};
-    if (pair.second >= 0) {
-      sides.push_back(pair.second);
-      if (chain_key(chains[pair.second], pieces, strips) <
-          chain_key(chains[pair.first], pieces, strips))
-        std::swap(sides[0], sides[1]);
-    }
-    // The preferred side takes what it can; the other side takes the edges it left.
-    const Chain& first = chains[sides[0]];
-    std::vector<FlapPlan> first_plans = plan(first);
-    const int n = static_cast<int>(pieces[first.piece].loops[first.loop].size());
-    std::vector<char> covered(n, 0);
-    for (const FlapPlan& p : first_plans)
-      for (int e : p.edges) covered[e] = 1;
-    bool any = !first_plans.empty();
-    if (any) accept(first, first_plans, pair.printed);
-    if (sides.size() > 1) {
-      const Chain& second = chains[sides[1]];
-      const int m = static_cast<int>(pieces[second.piece].loops[second.loop].size());
-      std::vector<char> wanted(m, 0);
-      for (int i = 0; i < first.count; ++i) {
-        const int e = (first.start + i) % n;
-        if (covered[e]) continue;
-        const int id = seams.id[first.piece][first.loop][e];
-        const int partner = id >= 0 ? seams.partner[id] : -1;
-        if (partner < 0) continue;
-        const auto& ref = seams.refs[partner];
-        if (ref[0] == second.piece && ref[1] == second.loop) wanted[ref[2]] = 1;
-      }
-      // The wanted edges of the second chain as runs of consecutive edges.
-      std::vector<FlapPlan> second_plans;
-      for (int i = 0; i < second.count; ++i) {
-        const int e = (second.start + i) % m;
-        const int before = (second.start + i + m - 1) % m;
-        if (!wanted[e] || (i > 0 && wanted[before])) continue;
-        int count = 1;
-        while (i + count < second.count && wanted[(second.start + i + count) % m]) ++count;
-        Chain part = second;
-        part.start = e;
-        part.count = count;
-        part.closed = false;
-        for (FlapPlan& p : plan(part)) second_plans.push_back(std::move(p));
-      }
-      if (!second_plans.empty()) {
-        accept(second, second_plans, pair.printed);
-        any = true;
-      }
-    }
-    if (!any)
-      warnings.push_back("seam " + pair.printed + " has no room for a glue tab on either side");
   }
+  shapes.slices.resize(before);
+  shapes.slice_boxes.resize(before);
+  return plans;
+}
+
+std::vector<FlapPlan> TabPlanner::plan_part(const Chain& edge, double t0, double t1) {
+  const TabGeometry geometry{width_, angle_, min_height_, overlap_depth_};
+  const Piece& piece = pieces_[edge.piece];
+  PieceShapes& shapes = shapes_of(edge.piece);
+  const std::size_t before = shapes.slices.size();
+  Chain single = edge;
+  single.count = 1;
+  single.closed = false;
+  const std::pair<double, double> part{t0, t1};
+  std::vector<FlapPlan> plans =
+      plan_flaps(strips_[piece.strip], piece, single, geometry, shapes, &part);
+  shapes.slices.resize(before);
+  shapes.slice_boxes.resize(before);
+  return plans;
+}
+
+void TabPlanner::reserve(const Chain& chain, const std::vector<FlapPlan>& plans) {
+  PieceShapes& shapes = shapes_of(chain.piece);
+  for (const FlapPlan& plan : plans)
+    for (const auto& slice : plan.slices) {
+      Box2 box;
+      for (const Vec2& c : slice) box.add(c);
+      shapes.slices.push_back(slice);
+      shapes.slice_boxes.push_back(box);
+    }
+}
+
+void TabPlanner::commit(const Chain& chain, std::vector<FlapPlan>& plans,
+                        const std::string& label) {
+  commit_flaps(pieces_[chain.piece], chain, label, plans, [&](int edge) {
+    return tab_texture(pieces_, strips_, seams_, chain.piece, chain.loop, edge);
+  });
+}
+
+std::vector<Chain> TabPlanner::partner_parts(const Chain& from, const std::vector<char>& along_from,
+                                             const Chain& to) const {
+  const int n = static_cast<int>(pieces_[from.piece].loops[from.loop].size());
+  const int m = static_cast<int>(pieces_[to.piece].loops[to.loop].size());
+  std::vector<char> wanted(m, 0);
+  for (int i = 0; i < from.count; ++i) {
+    if (!along_from[i]) continue;
+    const int e = (from.start + i) % n;
+    const int id = seams_.id[from.piece][from.loop][e];
+    const int partner = id >= 0 ? seams_.partner[id] : -1;
+    if (partner < 0) continue;
+    const auto& ref = seams_.refs[partner];
+    if (ref[0] == to.piece && ref[1] == to.loop) wanted[ref[2]] = 1;
+  }
+  std::vector<Chain> parts;
+  for (int i = 0; i < to.count; ++i) {
+    const int e = (to.start + i) % m;
+    const int before = (to.start + i + m - 1) % m;
+    if (!wanted[e] || (i > 0 && wanted[before])) continue;
+    int count = 1;
+    while (i + count < to.count && wanted[(to.start + i + count) % m]) ++count;
+    Chain part = to;
+    part.start = e;
+    part.count = count;
+    part.closed = false;
+    parts.push_back(part);
+  }
+  return parts;
+}
+
+std::vector<char> covered_positions(const Chain& chain, const Piece& piece,
+                                    const std::vector<FlapPlan>& plans) {
+  const int n = static_cast<int>(piece.loops[chain.loop].size());
+  std::vector<char> covered(n, 0), along(chain.count, 0);
+  for (const FlapPlan& p : plans)
+    for (int e : p.edges) covered[e] = 1;
+  for (int i = 0; i < chain.count; ++i) along[i] = covered[(chain.start + i) % n];
+  return along;
 }
 
 }  // namespace papercraft::layout_internal
