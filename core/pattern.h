@@ -34,6 +34,11 @@ struct Label {
 
 enum class FoldKind { Mountain, Valley };
 
+/// The side of the sheet the pattern is printed on. Front: the printed side is the outside of
+/// the model. Back: every page is mirrored (x -> page width - x) so that, printed and cut from
+/// the back of the sheet, the pieces come out the right way round with the print inside.
+enum class PrintSide { Front, Back };
+
 struct FoldLine {
   Vec2 a = Vec2::Zero();
   Vec2 b = Vec2::Zero();
@@ -55,8 +60,9 @@ struct TexturePatch {
 
 /// A glue tab on one side of a seam, as one or more flaps (a bent seam gets one flap per
 /// nearly straight run of edges). Each flap polygon is counter-clockwise on the page as a
-/// reader sees it: its base polyline (on the seam) in reverse, then its outer chain; `bases`
-/// are the base polylines, the tab's fold lines (mountain).
+/// reader sees it (clockwise on a page printed on the back, which is mirrored): its base
+/// polyline (on the seam) in reverse, then its outer chain; `bases` are the base polylines,
+/// the tab's fold lines (mountain; valley on the back).
 struct Tab {
   std::string label;
   std::vector<std::vector<Vec2>> flaps;
@@ -66,7 +72,8 @@ struct Tab {
   std::vector<TexturePatch> texture;
 };
 
-/// A boundary edge of a placed piece in page mm, the piece on its left as a reader sees it.
+/// A boundary edge of a placed piece in page mm, the piece on its left as a reader sees it
+/// (on its right on a page printed on the back).
 struct PlacedEdge {
   Vec2 a = Vec2::Zero();
   Vec2 b = Vec2::Zero();
@@ -76,7 +83,8 @@ struct PlacedEdge {
 };
 
 /// Maps a strip's vertices2d (model units) to page mm: page = linear * v + translation.
-/// linear = diag(1, -1) * rotation * mm_per_unit (the y flip of page coordinates).
+/// linear = diag(1, -1) * rotation * mm_per_unit (the y flip of page coordinates); on a page
+/// printed on the back diag(-1, -1) * rotation * mm_per_unit and the translation mirrored.
 struct PageTransform {
   Eigen::Matrix2d linear = Eigen::Matrix2d::Identity();
   Vec2 translation = Vec2::Zero();
@@ -157,6 +165,10 @@ struct PatternLayout {
   PageSize page;
   double margin_mm = 10.0;
   double mm_per_unit = 1.0;
+  /// Back: pieces, tabs, folds and labels mirrored across the page's vertical centre line;
+  /// fold kinds are as seen from the printed side (the model's inside), so a convex edge is a
+  /// Valley and a tab's base (Tab::bases) a valley fold. Texts still read left to right.
+  PrintSide print_side = PrintSide::Front;
   std::vector<Page> pages;
   /// Pages the plain shelf packing and the rectangle packing need for the same pieces.
   int shelf_page_count = 0;

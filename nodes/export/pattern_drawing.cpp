@@ -194,8 +194,10 @@ std::vector<DrawLayer> pattern_page_drawing(const PatternLayout& layout, int pag
     const bool textured_tabs = style.images != nullptr;
     // A textured tab shows the texture, not the grey fill; its outline is the cut line.
     DrawPath flaps{{}, true, false, pens.print, textured_tabs ? "" : pens.tab_fill};
+    // A tab folds away from the outside: a mountain seen from the front, a valley from the back.
+    DrawPath& tab_folds = layout.print_side == PrintSide::Back ? dales : hills;
     for (const Tab& tab : piece.tabs) {
-      for (const auto& base : tab.bases) hills.polylines.push_back(base);
+      for (const auto& base : tab.bases) tab_folds.polylines.push_back(base);
       for (const auto& flap : tab.flaps) flaps.polylines.push_back(flap);
     }
     if (!hills.polylines.empty()) mountain.paths.push_back(std::move(hills));

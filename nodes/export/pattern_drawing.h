@@ -8,7 +8,8 @@
 //   tabs     glue tab flaps (grey fill in the print preset; unpainted otherwise)
 //   labels   seam labels and piece numbers
 //   valley   valley folds
-//   mountain mountain folds, including the fold at the base of every tab
+//   mountain mountain folds, including the fold at the base of every tab (a valley fold on
+//            a layout printed on the back, PatternLayout::print_side)
 // A gentle fold (FoldLine::gentle, a slight bend at a ruling) is drawn in its layer with a
 // faint thin pen, only as short marks at its two ends: the page shows the creases that
 // matter and still tells where to curve the paper.

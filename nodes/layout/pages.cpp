@@ -22,6 +22,7 @@
 #include "nodes/layout/nesting.h"
 #include "nodes/layout/pieces.h"
 #include "nodes/layout/polygon_2d.h"
+#include "nodes/layout/print_side.h"
 #include "nodes/layout/rectangle_packing.h"
 #include "nodes/layout/seam_pairing.h"
 #include "nodes/layout/split_to_fit.h"
@@ -646,9 +647,8 @@ int divisions(const std::vector<FlatStrip>& strips, const LayoutOptions& options
   return n >= 2 ? n : 1;
 }
 
-}  // namespace
-
-PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
+// layout_pages before it mirrors the pages for printing on the back.
+PatternLayout front_layout(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
   PatternLayout layout = layout_tries(strips, options, false);
   const int n = divisions(strips, options);
   if (n <= 1) return layout;
@@ -690,6 +690,14 @@ PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOpt
            ? ", and " + std::to_string(over - over_divided) + " fewer pieces overflow their page"
            : ""));
   return divided;
+}
+
+}  // namespace
+
+PatternLayout layout_pages(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
+  PatternLayout layout = front_layout(strips, options);
+  if (options.print_side == PrintSide::Back) mirror_for_back_printing(layout);
+  return layout;
 }
 
 namespace {

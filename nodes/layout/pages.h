@@ -26,6 +26,8 @@
 //   the other side gets it. Alternate, Both and None place them otherwise (see TabStyle);
 //   a tab narrows where the outline leaves less room and never covers its own piece or
 //   another tab of it.
+// - print_side Back mirrors every page at the end (print_side.h): the conventions above
+//   then hold for the page seen through the sheet.
 //
 // Example (node config): layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}}
 
@@ -77,6 +79,8 @@ struct LayoutOptions {
   /// Alternate: the length (mm) of the runs whose tabs change sides along a seam; a seam
   /// shorter than 1.5 runs is one run (as TabStyle::One).
   double alternate_run_mm = 40.0;
+  /// Back: every page mirrored, to be printed on the back of the sheet (PrintSide).
+  PrintSide print_side = PrintSide::Front;
   /// A seam with room for a tab on neither side (a narrow slit, a tiny seam in a notch) gets
   /// a joining strip instead: a loose strip 2 x tab_width_mm wide, named by the seam's label,
   /// glued behind both sides (Page::joints).

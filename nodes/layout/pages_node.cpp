@@ -57,6 +57,12 @@ ParamTable<O> layout_table(bool nesting) {
               "alternate_run_mm", [](O & o) -> auto& { return o.alternate_run_mm; },
               "tab_style alternate: length of the runs whose tabs change sides along a seam",
               greater_than(0))
+          .choice(
+              "print_side", [](O & o) -> auto& { return o.print_side; },
+              std::vector<std::pair<std::string, PrintSide>>{{"front", PrintSide::Front},
+                                                             {"back", PrintSide::Back}},
+              "front, or back: pages mirrored to print and cut on the back of the sheet (the "
+              "print inside the model; mountain and valley swapped)")
           .add(
               "joining_strips", [](O & o) -> auto& { return o.joining_strips; },
               "a seam with room for a tab on neither side gets a loose strip glued behind both "
