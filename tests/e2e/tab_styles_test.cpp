@@ -83,7 +83,10 @@ bool same_polylines(std::vector<std::vector<Vec2>> a, std::vector<std::vector<Ve
       bool equal = true;
       for (std::size_t k = 0; k < line.size() && equal; ++k)
         equal = (line[k] - b[j][k]).cwiseAbs().maxCoeff() <= 2.1e-3;
-      if (equal) found = used[j] = 1;
+      if (equal) {
+        used[j] = 1;
+        found = true;
+      }
     }
     if (!found) return false;
   }
@@ -136,12 +139,22 @@ TEST(TabStylesEndToEnd, EveryStyleOnABoxAndASphere) {
       ASSERT_FALSE(flags.empty());
       for (const auto& [label, sides] : flags) {
         const int tabbed = static_cast<int>(std::count(sides.begin(), sides.end(), true));
-        if (style == TabStyle::Both) EXPECT_EQ(tabbed, static_cast<int>(sides.size())) << label;
-        if (style == TabStyle::None) EXPECT_EQ(tabbed, 0) << label;
-        if (style == TabStyle::One) EXPECT_GE(tabbed, 1) << label;
+        if (style == TabStyle::Both) {
+          EXPECT_EQ(tabbed, static_cast<int>(sides.size())) << label;
+        }
+        if (style == TabStyle::None) {
+          EXPECT_EQ(tabbed, 0) << label;
+        }
+        if (style == TabStyle::One) {
+          EXPECT_GE(tabbed, 1) << label;
+        }
       }
-      if (style == TabStyle::None) EXPECT_EQ(tab_paths, 0);
-      if (style != TabStyle::None) EXPECT_GT(tab_paths, 0);
+      if (style == TabStyle::None) {
+        EXPECT_EQ(tab_paths, 0);
+      }
+      if (style != TabStyle::None) {
+        EXPECT_GT(tab_paths, 0);
+      }
       if (style != TabStyle::Alternate) continue;
       // A seam at least 2.5 runs long has a tab on each side.
       std::map<std::string, std::vector<std::pair<double, bool>>> sides;
@@ -202,10 +215,14 @@ TEST(TabStylesEndToEnd, BackPagesAreTheMirrorOfFrontPages) {
       std::vector<char> used(back_texts.size(), 0);
       for (const auto& [words, at] : front_texts) {
         bool found = false;
-        for (std::size_t k = 0; k < back_texts.size() && !found; ++k)
+        for (std::size_t k = 0; k < back_texts.size() && !found; ++k) {
           if (!used[k] && back_texts[k].first == words &&
-              (back_texts[k].second - Vec2(width - at.x(), at.y())).cwiseAbs().maxCoeff() <= 2.1e-3)
-            found = used[k] = 1;
+              (back_texts[k].second - Vec2(width - at.x(), at.y())).cwiseAbs().maxCoeff() <=
+                  2.1e-3) {
+            used[k] = 1;
+            found = true;
+          }
+        }
         EXPECT_TRUE(found) << "text " << words << " not mirrored";
       }
       EXPECT_EQ(b.find("scale(-1"), std::string::npos) << "no mirrored text";
