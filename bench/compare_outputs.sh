@@ -34,7 +34,7 @@ work=$root/build/compare-outputs
 meshes_dir=""
 declare -a positional=()
 
-usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+. "$root/bench/lib.sh"
 
 while [[ $# -gt 0 ]]; do
   case $1 in
@@ -64,12 +64,6 @@ if [[ ${#meshes[@]} -eq 0 ]]; then
   mapfile -t meshes < <(ls "$meshes_dir"/*.off)
 fi
 
-faces_of() {  # the face count in an OFF header, or 0 when unknown
-  awk 'NR == 1 && $1 ~ /OFF$/ && NF > 1 { print $3; exit }
-       NR == 1 && $1 ~ /OFF$/ { next }
-       /^[ \t]*#/ || NF == 0 { next }
-       { print $2; exit }' "$1" 2>/dev/null | grep -E '^[0-9]+$' || echo 0
-}
 
 # run BIN MESH TOL DIR: writes DIR/{status,seconds,error}; outputs in DIR/out/<name>/
 run_one() {

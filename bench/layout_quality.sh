@@ -30,7 +30,7 @@ bin=$root/build/runner/papercraft
 declare -a meshes=()
 declare -a variants=(nest rect)
 
-usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+. "$root/bench/lib.sh"
 while [[ $# -gt 0 ]]; do
   case $1 in
     --tolerance) tolerance=$2; shift 2 ;;
@@ -54,12 +54,6 @@ cp "$bin" "$work/papercraft"
 sed 's/impl: layout.pages, /impl: layout.rectangles, /' "$root/configs/default.yaml" >"$work/rectangles.yaml"
 grep -q layout.rectangles "$work/rectangles.yaml" || { echo "no layout.pages in default.yaml" >&2; exit 2; }
 
-faces_of() {
-  awk 'NR == 1 && $1 ~ /OFF$/ && NF > 1 { print $3; exit }
-       NR == 1 && $1 ~ /OFF$/ { next }
-       /^[ \t]*#/ || NF == 0 { next }
-       { print $2; exit }' "$1" 2>/dev/null | grep -E '^[0-9]+$' || echo 0
-}
 
 rows=$work/rows.tsv
 : >"$rows"

@@ -32,7 +32,7 @@ bin=$root/build/runner/papercraft
 checker=$root/build/bench/piece_quality
 declare -a extra=() meshes=()
 
-usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+. "$root/bench/lib.sh"
 while [[ $# -gt 0 ]]; do
   case $1 in
     --tolerances) tolerances=$2; shift 2 ;;
@@ -56,12 +56,6 @@ fi
 mkdir -p "$work"
 cp "$bin" "$work/papercraft"
 
-faces_of() {
-  awk 'NR == 1 && $1 ~ /OFF$/ && NF > 1 { print $3; exit }
-       NR == 1 && $1 ~ /OFF$/ { next }
-       /^[ \t]*#/ || NF == 0 { next }
-       { print $2; exit }' "$1" 2>/dev/null | grep -E '^[0-9]+$' || echo 0
-}
 
 for tol in $tolerances; do
   out=$work/out-${tol%\%}

@@ -59,7 +59,7 @@ repeat=1
 declare -a inputs=()
 report_only=0
 
-usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+. "$root/bench/lib.sh"
 
 while [[ $# -gt 0 ]]; do
   case $1 in

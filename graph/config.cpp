@@ -75,6 +75,35 @@ class Parser {
     return node.Scalar();
   }
 
+  // The `effort:` map: each weight a number >= 0 (core/effort.h), unknown keys refused.
+  EffortWeights effort_weights(const YAML::Node& map) const {
+    EffortWeights weights;
+    const std::pair<const char*, double*> keys[] = {
+        {"piece", &weights.piece},
+        {"seam", &weights.seam},
+        {"glue_per_metre", &weights.glue_per_metre},
+        {"sawtooth", &weights.sawtooth},
+        {"small_piece", &weights.small_piece},
+        {"narrow_piece", &weights.narrow_piece}};
+    std::vector<std::string> names;
+    for (const auto& key : keys) names.push_back(key.first);
+    if (!map.IsMap()) fail(map, "effort: expected a map of weights (" + join(names) + ")");
+    check_keys(map, "effort", names, {});
+    for (const auto& [name, target] : keys) {
+      const YAML::Node node = map[name];
+      if (!node) continue;
+      const std::string text = scalar(node, std::string("a number for effort.") + name);
+      double number = 0.0;
+      const std::size_t used = parse_number_prefix(text, number);
+      if (used == 0 || used != text.size() || !std::isfinite(number))
+        fail(node, std::string("effort.") + name + ": expected a number, got '" + text + "'");
+      if (number < 0.0)
+        fail(node, std::string("effort.") + name + " must be at least 0, got " + text);
+      *target = number;
+    }
+    return weights;
+  }
+
   PipelineConfig parse(const std::string& text) {
     PipelineConfig config;
     config.file = file_;
@@ -88,7 +117,7 @@ class Parser {
     if (!root.IsDefined() || root.IsNull()) fail(ConfigMark{1, 1}, "the configuration is empty");
     check_keys(root, "the configuration",
                {"description", "tolerance", "threads", "height_mm", "scale", "min_width_mm",
-                "min_area_mm2", "nodes"},
+                "min_area_mm2", "effort", "nodes"},
                {"nodes"});
     auto paper = [&](const char* key, bool zero_ok, const std::string& meaning) {
       std::optional<double> value;
@@ -109,6 +138,7 @@ class Parser {
     config.scale = paper("scale", false, "mm on paper per model unit");
     config.min_width_mm = paper("min_width_mm", true, "the narrowest piece, in mm; 0: no bound");
     config.min_area_mm2 = paper("min_area_mm2", true, "the smallest piece, in mm^2; 0: no bound");
+    if (const YAML::Node effort = root["effort"]) config.effort = effort_weights(effort);
     if (root["tolerance"]) {
       try {
         config.tolerance = parse_tolerance(scalar(root["tolerance"], "a tolerance like 2%"));

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/effort.h"
 #include "graph/params.h"
 #include "graph/registry.h"
 #include "graph/tolerance.h"
@@ -53,6 +54,8 @@ struct PipelineConfig {
   std::optional<int> threads;
   /// Paper: each key given in the config (height_mm, scale, min_width_mm, min_area_mm2).
   std::optional<double> height_mm, scale, min_width_mm, min_area_mm2;
+  /// The `effort:` map: the assembly effort's weights (core/effort.h), each key optional.
+  std::optional<EffortWeights> effort;
   std::vector<NodeConfig> nodes;
   std::vector<EdgeConfig> edges;
   int entry = -1;  // the node that takes Job

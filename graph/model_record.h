@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/effort.h"
 #include "core/triangle_mesh.h"
 
 namespace papercraft {
@@ -71,6 +72,9 @@ struct ModelRecord {
   int joining_strips = 0;
   double smallest_text_mm = 0.0;
   int overlapping_text = 0;
+  /// layout: what the pages cost a person to cut and glue (report.json "effort").
+  AssemblyEffort effort;
+  bool effort_measured = false;  // false until the layout ran
 
   /// export: the largest distance of an input vertex to the approximation (error.ply).
   double max_vertex_distance = 0.0;

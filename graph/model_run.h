@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/effort.h"
 #include "core/piece_limits.h"
 #include "graph/model_record.h"
 #include "graph/tolerance.h"
@@ -28,6 +29,8 @@ struct RunSettings {
   std::string config_file;  // path or "<builtin>"
   std::string config_text;  // the YAML actually used (copied into report.json)
   PaperSpec paper;
+  /// The assembly effort's weights (the config's `effort:` map): report.json's `effort`.
+  EffortWeights effort;
   /// A model whose surface area at the print scale needs more pages than this (estimated
   /// from the printable area of one page, `page_area_mm2`) is refused before refinement.
   int max_pages = 100;

@@ -91,6 +91,7 @@ std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const Pipel
   if (config.scale) paper.scale = *config.scale;
   if (config.min_width_mm) paper.min_width_mm = *config.min_width_mm;
   if (config.min_area_mm2) paper.min_area_mm2 = *config.min_area_mm2;
+  if (config.effort) settings->effort = *config.effort;
   if (request.height_mm) {
     paper.height_mm = *request.height_mm;
     paper.scale = 0.0;  // a height on the command line wins over a scale in the config

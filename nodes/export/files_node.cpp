@@ -77,6 +77,36 @@ nlohmann::json vec3_json(const Vec3& p) {
   return {p.x(), p.y(), p.z()};
 }
 
+// report.json's "effort": the total, each term, what each term costs and the weights.
+nlohmann::json effort_json(const AssemblyEffort& effort) {
+  const EffortTerms& t = effort.terms;
+  const EffortWeights& w = effort.weights;
+  return {{"total", effort.total},
+          {"things_to_cut", t.things_to_cut},
+          {"printed_pieces", t.printed_pieces},
+          {"joining_strips", t.joining_strips},
+          {"seam_chains", t.seam_chains},
+          {"self_seams", t.self_seams},
+          {"glue_length_mm", t.glue_length_mm},
+          {"sawtooth_corners", t.sawtooth_corners},
+          {"small_pieces", t.small_pieces},
+          {"narrow_pieces", t.narrow_pieces},
+          {"cost",
+           {{"things_to_cut", w.piece * t.things_to_cut},
+            {"seam_chains", w.seam * t.seam_chains},
+            {"glue_length", w.glue_per_metre * t.glue_length_mm / 1000.0},
+            {"sawtooth_corners", w.sawtooth * t.sawtooth_corners},
+            {"small_pieces", w.small_piece * t.small_pieces},
+            {"narrow_pieces", w.narrow_piece * t.narrow_pieces}}},
+          {"weights",
+           {{"piece", w.piece},
+            {"seam", w.seam},
+            {"glue_per_metre", w.glue_per_metre},
+            {"sawtooth", w.sawtooth},
+            {"small_piece", w.small_piece},
+            {"narrow_piece", w.narrow_piece}}}};
+}
+
 }  // namespace
 
 nlohmann::json model_report(const ModelRun& model) {
@@ -145,6 +175,7 @@ nlohmann::json model_report(const ModelRun& model) {
                       {"joining_strips", record.joining_strips},
                       {"smallest_text_mm", record.smallest_text_mm},
                       {"overlapping_text", record.overlapping_text}};
+  if (record.effort_measured) report["effort"] = effort_json(record.effort);
   report["texture"] = {{"baked_images", record.baked_images},
                        {"baked_pixels", record.baked_pixels},
                        {"bake_seconds", record.bake_seconds},

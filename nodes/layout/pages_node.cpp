@@ -3,6 +3,7 @@
 //
 //   layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}, to: [export]}
 
+#include "core/effort.h"
 #include "core/errors.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
@@ -146,6 +147,13 @@ NodeSpec layout_spec(std::string name, std::string summary, const ParamTable<O>&
               auto layout =
                   std::make_shared<PatternLayout>(layout_pages(strips->flat, run_options));
               for (const auto& warning : layout->warnings) in.model->note(warning);
+              const RunSettings& settings = *in.model->settings;
+              const AssemblyEffort effort = assembly_effort(
+                  *layout,
+                  {.min_width_mm = settings.paper.min_width_mm,
+                   .min_area_mm2 = settings.paper.min_area_mm2,
+                   .max_narrow_share = PieceLimits{}.max_narrow_share},
+                  settings.effort);
               in.model->update([&](ModelRecord& record) {
                 record.pages = static_cast<int>(layout->pages.size());
                 record.shelf_pages = layout->shelf_page_count;
@@ -156,6 +164,8 @@ NodeSpec layout_spec(std::string name, std::string summary, const ParamTable<O>&
                 record.joining_strips = layout->stats.joining_strips;
                 record.smallest_text_mm = layout->stats.smallest_text_mm;
                 record.overlapping_text = layout->stats.overlapping_text;
+                record.effort = effort;
+                record.effort_measured = true;
               });
               Pattern pattern;
               pattern.strips = strips;

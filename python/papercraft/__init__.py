@@ -76,6 +76,12 @@ class Result:
         return int(self.report["result"]["pages"])
 
     @property
+    def effort(self) -> Dict[str, Any]:
+        """The assembly effort (report.json "effort"): "total", each term ("things_to_cut",
+        "seam_chains", "sawtooth_corners", ...), "cost" per term and the "weights"."""
+        return dict(self.report["effort"])
+
+    @property
     def notes(self) -> List[str]:
         return list(self.report.get("notes", []))
 

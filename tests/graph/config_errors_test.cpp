@@ -47,6 +47,23 @@ TEST(ConfigErrors, PaperLimitsMustBeNumbersAtLeastZero) {
   EXPECT_FALSE(config.height_mm.has_value());
 }
 
+TEST(ConfigErrors, EffortWeightsMustBeNumbersAtLeastZero) {
+  const std::string nodes = "nodes:\n  source: {impl: test.source}\n";
+  expect_error("effort: {seam: -1}\n" + nodes, 1, 16, {"effort.seam must be at least 0", "-1"});
+  expect_error("effort: {piece: .nan}\n" + nodes, 1, 17, {"effort.piece: expected a number"});
+  expect_error("effort: {sawtooth: lots}\n" + nodes, 1, 20, {"effort.sawtooth: expected a number"});
+  expect_error("effort: {pieces: 1}\n" + nodes, 1, 10, {"unknown key 'pieces'", "glue_per_metre"});
+  expect_error("effort: 3\n" + nodes, 1, 9, {"effort: expected a map"});
+  static const Registry registry = testing::test_registry();
+  const PipelineConfig config = parse_pipeline_config(
+      "effort:\n  seam: 2\n  narrow_piece: 0\n" + nodes, "cfg.yaml", registry);
+  ASSERT_TRUE(config.effort.has_value());
+  EXPECT_EQ(config.effort->seam, 2.0);
+  EXPECT_EQ(config.effort->narrow_piece, 0.0);
+  EXPECT_EQ(config.effort->piece, EffortWeights{}.piece);  // not given: the default
+  EXPECT_FALSE(parse_pipeline_config(nodes, "cfg.yaml", registry).effort.has_value());
+}
+
 TEST(ConfigErrors, UnknownNodeKey) {
   expect_error("nodes:\n  source: {impl: test.source, too: [x]}\n", 2, 31,
                {"unknown key 'too'", "node 'source'"});

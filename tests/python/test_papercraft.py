@@ -63,6 +63,8 @@ def test_arrays_give_the_command_lines_result(tmp_path):
     assert result.report["result"]["flat_strips"] == cli["result"]["flat_strips"]
     assert result.hausdorff_bound == cli["result"]["hausdorff_bound"]
     assert result.files["strips.json"] == (tmp_path / "cli" / "torus" / "strips.json").read_bytes()
+    assert result.effort == cli["effort"]
+    assert result.effort["things_to_cut"] == len(result.pieces) + result.effort["joining_strips"]
 
 
 def test_load_gives_the_loaded_mesh(tmp_path):
