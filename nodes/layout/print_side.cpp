@@ -60,6 +60,13 @@ void mirror_for_back_printing(PatternLayout& layout) {
         for (Label& label : piece.labels) mirror_label(label);
         mirror_label(piece.number);
       }
+  // Every page says which side to print on, the footer's right end where it was.
+  const std::string note = " - print on the back of the sheet";
+  for (Page& page : layout.pages) {
+    if (page.footer.text.empty()) continue;
+    page.footer.text += note;
+    page.footer.position.x() -= 0.5 * 0.6 * page.footer.size_mm * static_cast<double>(note.size());
+  }
   layout.print_side = PrintSide::Back;
 }
 

@@ -59,8 +59,14 @@ TEST(PrintSide, BackPagesAreTheMirrorOfFrontPages) {
     int mountains = 0, valleys = 0;
     for (std::size_t p = 0; p < front.pages.size(); ++p) {
       const Page &f = front.pages[p], &b = back.pages[p];
-      // Page furniture stays readable where it was.
-      EXPECT_EQ(b.footer.position, f.footer.position);
+      // Page furniture stays readable where it was; the footer says to print on the back and
+      // ends where it did.
+      EXPECT_EQ(b.footer.text, f.footer.text + " - print on the back of the sheet");
+      EXPECT_EQ(b.footer.position.y(), f.footer.position.y());
+      const auto right_end = [](const Label& l) {
+        return l.position.x() + 0.3 * l.size_mm * static_cast<double>(l.text.size());
+      };
+      EXPECT_NEAR(right_end(b.footer), right_end(f.footer), 1e-9);
       EXPECT_EQ(b.scale_bar.start, f.scale_bar.start);
       ASSERT_EQ(b.pieces.size(), f.pieces.size());
       for (std::size_t i = 0; i < f.pieces.size(); ++i) {
