@@ -70,28 +70,26 @@ std::vector<std::vector<Vec2>> flap_slices(const std::vector<Vec2>& base, double
   return slices;
 }
 
-// Flaps along a chain: one per nearly straight run of edges (a flap cannot fold along a
-// bend), each as high as fits up to the tab width, dropped where none fits. With `part`
-// (t0, t1), the chain is one edge and its one flap lies on that part of it.
-std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, const Chain& chain,
-                                 const TabGeometry& geometry, PieceShapes& shapes,
-                                 const std::pair<double, double>* part = nullptr) {
-  const std::vector<PieceEdge>& loop = piece.loops[chain.loop];
-  const int n = static_cast<int>(loop.size());
-  std::vector<int> edges;
-  for (int i = 0; i < chain.count; ++i) edges.push_back((chain.start + i) % n);
-  auto point = [&](int v) { return data.points[v]; };
-  auto direction = [&](int e) { return Vec2(point(loop[e].v1) - point(loop[e].v0)); };
-  auto turn = [&](int e0, int e1) {  // signed turning angle from edge e0 to edge e1
-    const Vec2 a = direction(e0), b = direction(e1);
-    return std::atan2(cross(a, b), a.dot(b));
-  };
+// The signed turning angle from direction a to direction b.
+double turn_between(const Vec2& a, const Vec2& b) {
+  return std::atan2(cross(a, b), a.dot(b));
+}
+
+// A chain's edges (`edges`, in order; `direction(e)` the flat vector of edge e) cut into the
+// runs a flap can fold along: broken at a joint turning over 15 degrees, after 30 degrees of
+// turning in all, and at zero-length edges (which belong to no run). A closed chain starts at
+// its sharpest joint, so that a run breaks there.
+template <class Direction>
+std::vector<std::vector<int>> flap_runs(std::vector<int> edges, bool closed,
+                                        const Direction& direction) {
+  auto turn = [&](int e0, int e1) { return turn_between(direction(e0), direction(e1)); };
   const double max_joint = 15 * kDegree, max_run = 30 * kDegree;
-  if (chain.closed) {  // start at the sharpest joint so runs break there
+  const int count = static_cast<int>(edges.size());
+  if (closed) {
     int best = 0;
     double sharpest = -1;
-    for (int i = 0; i < chain.count; ++i) {
-      const double t = std::abs(turn(edges[(i + chain.count - 1) % chain.count], edges[i]));
+    for (int i = 0; i < count; ++i) {
+      const double t = std::abs(turn(edges[(i + count - 1) % count], edges[i]));
       if (t > sharpest) {
         sharpest = t;
         best = i;
@@ -99,9 +97,7 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
     }
     std::rotate(edges.begin(), edges.begin() + best, edges.end());
   }
-  // Runs: break at sharp joints, after too much accumulated turning, at zero-length edges.
   std::vector<std::vector<int>> runs;
-  std::vector<double> joint_before, joint_after;  // turning angle at each run's ends
   double accumulated = 0;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const bool degenerate = direction(edges[i]).norm() < 1e-9;
@@ -124,6 +120,23 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
     }
     runs.back().push_back(edges[i]);
   }
+  return runs;
+}
+
+// Flaps along a chain: one per nearly straight run of edges (a flap cannot fold along a
+// bend), each as high as fits up to the tab width, dropped where none fits. With `part`
+// (t0, t1), the chain is one edge and its one flap lies on that part of it.
+std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, const Chain& chain,
+                                 const TabGeometry& geometry, PieceShapes& shapes,
+                                 const std::pair<double, double>* part = nullptr) {
+  const std::vector<PieceEdge>& loop = piece.loops[chain.loop];
+  const int n = static_cast<int>(loop.size());
+  std::vector<int> edges;
+  for (int i = 0; i < chain.count; ++i) edges.push_back((chain.start + i) % n);
+  auto point = [&](int v) { return data.points[v]; };
+  auto direction = [&](int e) { return Vec2(point(loop[e].v1) - point(loop[e].v0)); };
+  auto turn = [&](int e0, int e1) { return turn_between(direction(e0), direction(e1)); };
+  const std::vector<std::vector<int>> runs = flap_runs(edges, chain.closed, direction);
   std::vector<FlapPlan> plans;
   const int run_count = static_cast<int>(runs.size());
   for (int r = 0; r < run_count; ++r) {
@@ -191,8 +204,7 @@ std::vector<FlapPlan> plan_flaps(const StripData& data, const Piece& piece, cons
         const double start_angle = t0 > 0 ? base_angle : end_angle(true, base_angle);
         const double stop_angle = t1 < 1 ? base_angle : end_angle(false, base_angle);
         if (start_angle <= 2 * kDegree || stop_angle <= 2 * kDegree) break;
-        try_base({a + t0 * (b - a), a + t1 * (b - a)}, (t1 - t0) * length, start_angle,
-                 stop_angle);
+        try_base({a + t0 * (b - a), a + t1 * (b - a)}, (t1 - t0) * length, start_angle, stop_angle);
       }
     }
     // The configured angle first; a seam too short for a flap of the smallest height at that
