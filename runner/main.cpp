@@ -133,7 +133,8 @@ int main_impl(int argc, char** argv) {
 
   RunRequest run_request;
   std::vector<std::string> run_inputs;
-  auto* run = app.add_subcommand("run", "run the pipeline on mesh files (OBJ, OFF, PLY, STL)");
+  auto* run = app.add_subcommand(
+      "run", "run the pipeline on mesh files (OBJ, OFF, PLY, STL, glTF/GLB, 3MF)");
   run->add_option("meshes", run_inputs, "input meshes")->required();
   run->add_option("-c,--config", run_request.config_file, "pipeline YAML (default: builtin)");
   run->add_option("-t,--tolerance", run_request.tolerance,
