@@ -240,6 +240,31 @@ def other_seeds(cgal):
                 shutil.copy(path, os.path.join(CORPUS, "load_off", "cgal-" + name))
 
 
+def array_seeds():
+    """load_arrays: a vertex count byte, 3 doubles per vertex, then 3 int32 per triangle."""
+    import math
+
+    def arrays(points, faces):
+        data = bytes([len(points)])
+        for p in points:
+            data += struct.pack("<3d", *p)
+        for f in faces:
+            data += struct.pack("<3i", *f)
+        return data
+    put("load_arrays", "tetrahedron", arrays(TETRA_POINTS, TETRA_FACES))
+    put("load_arrays", "nan-vertex", arrays(TETRA_POINTS[:3] + [(0, 0, math.nan)], TETRA_FACES))
+    put("load_arrays", "index-out-of-range", arrays(TETRA_POINTS, TETRA_FACES[:3] + [(0, 3, 9)]))
+    put("load_arrays", "negative-index", arrays(TETRA_POINTS, TETRA_FACES[:3] + [(0, -1, 2)]))
+    put("load_arrays", "duplicate-face", arrays(TETRA_POINTS, TETRA_FACES + TETRA_FACES[:1]))
+    put("load_arrays", "no-faces", arrays(TETRA_POINTS, []))
+    points = TETRA_POINTS + [(1, 1, 0), (1, 1, 1)]  # a third face on edge 1-2
+    put("load_arrays", "non-manifold-edge",
+        arrays(points, TETRA_FACES + [(1, 2, 4), (1, 4, 5), (2, 5, 4)]))
+
+
+if __name__ == "__main__" and sys.argv[1:2] == ["--arrays"]:
+    array_seeds()  # the load_arrays seeds alone
+    sys.exit(0)
 if __name__ == "__main__" and sys.argv[1:2] == ["--scenes"]:
     scene_seeds()  # the glTF, GLB and 3MF seeds alone
     sys.exit(0)
@@ -248,4 +273,5 @@ if __name__ == "__main__":
         sys.exit(__doc__)
     mesh_seeds(sys.argv[1])
     scene_seeds()
+    array_seeds()
     other_seeds(sys.argv[2] if len(sys.argv) > 2 else None)

@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:?usage: fuzz/run.sh SECONDS [TARGET...]}
 shift
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(load_obj load_off load_ply load_stl load_gltf load_glb load_3mf mtl config batch_job)
+[ ${#targets[@]} -eq 0 ] && targets=(load_obj load_off load_ply load_stl load_gltf load_glb load_3mf load_arrays mtl config batch_job)
 build=build-fuzz
 if [ ! -f "$build/build.ninja" ]; then
   cmake --preset fuzz >/dev/null

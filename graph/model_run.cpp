@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/printable_utf8.h"
 #include "graph/params.h"
@@ -119,6 +122,39 @@ std::string ModelRun::error() const {
 void ModelRun::update(const std::function<void(ModelRecord&)>& change) {
   std::lock_guard lock(mutex_);
   change(record_);
+}
+
+void ModelRun::write_file(const std::string& name,
+                          const std::function<void(std::ostream&)>& write) {
+  if (settings->keep_in_memory) {
+    std::ostringstream out(std::ios::binary);
+    write(out);
+    std::lock_guard lock(mutex_);
+    files_[name] = std::move(out).str();
+    return;
+  }
+  const std::filesystem::path path = output_dir() / name;
+  write_via_temporary(path, [&](const std::filesystem::path& temporary) {
+    std::ofstream out(temporary, std::ios::binary);
+    if (!out) throw IOException(printable_utf8(path.string()) + ": cannot open for writing");
+    write(out);
+    out.close();
+    if (!out) throw IOException(printable_utf8(path.string()) + ": cannot write");
+  });
+}
+
+void ModelRun::write_file(const std::string& name, std::string_view contents) {
+  if (settings->keep_in_memory) {
+    std::lock_guard lock(mutex_);
+    files_[name] = std::string(contents);
+    return;
+  }
+  write_file_atomic(output_dir() / name, contents);
+}
+
+std::map<std::string, std::string> ModelRun::files() const {
+  std::lock_guard lock(mutex_);
+  return files_;
 }
 
 ModelRecord ModelRun::record() const {

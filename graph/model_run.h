@@ -11,7 +11,9 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/effort.h"
@@ -37,6 +39,9 @@ struct RunSettings {
   double page_area_mm2 = 0.0;  // 0: not estimated
   /// Refuse a tolerance above 50% of the largest side unless set.
   bool allow_large_tolerance = false;
+  /// Keep every model's files in memory (ModelRun::files) and write none: no folder is made
+  /// under output_dir, which only names the model. The Python module runs so.
+  bool keep_in_memory = false;
 };
 
 struct NodeStatistics {
@@ -62,6 +67,14 @@ struct ModelRun {
     return settings->output_dir / ("." + name + ".partial");
   }
   std::filesystem::path final_dir() const { return settings->output_dir / name; }
+
+  /// Writes one of the model's files, `name` in its folder: atomically into output_dir()
+  /// (made when needed), or into files() with settings->keep_in_memory. `write` gets a stream
+  /// to write the contents to (a file's, or memory's). Throws IOException as write_file_atomic.
+  void write_file(const std::string& name, const std::function<void(std::ostream&)>& write);
+  void write_file(const std::string& name, std::string_view contents);
+  /// The files written in memory (settings->keep_in_memory), by name.
+  std::map<std::string, std::string> files() const;
 
   /// The absolute tolerance (model units), fixed by the framework when the loader emits the
   /// model (set_input); 0 before.
@@ -137,6 +150,7 @@ struct ModelRun {
   bool abandoned_ = false;
   std::string error_;
   ModelRecord record_;
+  std::map<std::string, std::string> files_;  // with keep_in_memory
 };
 
 }  // namespace papercraft

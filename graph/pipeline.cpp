@@ -1,7 +1,5 @@
 #include "graph/pipeline.h"
 
-#include <unistd.h>
-
 #include <spdlog/spdlog.h>
 #include <tbb/flow_graph.h>
 #include <tbb/global_control.h>
@@ -316,16 +314,18 @@ class Execution {
     for (const auto& node : config_.nodes) model->node_labels.emplace_back(node.name, node.impl);
     if (options_.on_model_started) options_.on_model_started(*model);
     model->in_flight.store(1);
-    {
+    if (!settings_->keep_in_memory) {
       std::error_code ec;  // the staging folder of a run that was killed
       std::filesystem::remove_all(model->output_dir(), ec);
     }
-    nodes_[config_.entry]->try_put(
-        Envelope{model, std::make_shared<const Job>(Job{inputs_[index]})});
+    nodes_[config_.entry]->try_put(Envelope{
+        model, std::make_shared<const Job>(Job{
+                   inputs_[index], options_.meshes.empty() ? nullptr : options_.meshes[index]})});
   }
 
   // The staging folder becomes the model's folder whole (success) or goes away (failure).
   static void publish(ModelRun& model) {
+    if (model.settings->keep_in_memory) return;  // no folder: the files are in the ModelRun
     const std::filesystem::path staging = model.output_dir(), final_dir = model.final_dir();
     std::error_code ec;
     if (model.failed() || model.abandoned()) {
@@ -339,8 +339,8 @@ class Execution {
       std::filesystem::remove_all(old, ec);
       std::filesystem::rename(final_dir, old, ec);
       if (ec) {
-        model.fail("export", "cannot replace " + printable_utf8(final_dir.string()) + ": " +
-                                 ec.message());
+        model.fail("export",
+                   "cannot replace " + printable_utf8(final_dir.string()) + ": " + ec.message());
         std::filesystem::remove_all(staging, ec);
         return;
       }
@@ -416,7 +416,7 @@ class Execution {
   std::vector<std::shared_ptr<NodeBody>> bodies_;
   std::vector<std::unique_ptr<FlowNode>> nodes_;
   std::vector<std::vector<std::unique_ptr<PortNode>>> ports_;  // [node][output port]
-  std::vector<std::vector<int>> successors_;                    // edges per [node][port]
+  std::vector<std::vector<int>> successors_;                   // edges per [node][port]
   std::vector<std::unique_ptr<GatherNode>> gathers_;
   std::vector<int> gather_of_node_;
   std::vector<int> gather_order_;
@@ -443,6 +443,10 @@ std::vector<ModelResult> Pipeline::run(const std::vector<std::filesystem::path>&
   if (!options.names.empty() && options.names.size() != inputs.size()) {
     throw std::invalid_argument("Pipeline::run: " + std::to_string(options.names.size()) +
                                 " names for " + std::to_string(inputs.size()) + " inputs");
+  }
+  if (!options.meshes.empty() && options.meshes.size() != inputs.size()) {
+    throw std::invalid_argument("Pipeline::run: " + std::to_string(options.meshes.size()) +
+                                " meshes for " + std::to_string(inputs.size()) + " inputs");
   }
   Execution execution(config_, registry_, inputs, std::move(settings), options);
   return execution.run();

@@ -21,10 +21,12 @@
 
 namespace papercraft {
 
-/// The message a run starts with: one input file.
+/// The message a run starts with: one input file, or a mesh given in memory (`mesh`; then
+/// `input` only names it in messages and the report).
 struct Job {
   static constexpr const char* kMessageName = "Job";
   std::filesystem::path input;
+  std::shared_ptr<const TriangleMesh> mesh;
 };
 
 /// The outcome of one model, for the batch summary.
@@ -69,6 +71,9 @@ struct PipelineOptions {
   /// Output folder names, one per input; empty: unique_model_names(inputs). A caller running
   /// a share of a larger list passes the names it has in the whole list.
   std::vector<std::string> names;
+  /// Meshes given in memory (the Python module's arrays), one per input where not empty: the
+  /// loader validates and repairs them as it does a file's, and `inputs` only name them.
+  std::vector<std::shared_ptr<const TriangleMesh>> meshes;
   /// Called every progress_interval from a thread of the pipeline's own.
   std::function<void(const PipelineProgress&)> on_progress;
   std::chrono::milliseconds progress_interval{1000};
@@ -90,7 +95,7 @@ class Pipeline {
 
   /// Runs every input through the graph; returns one result per input, in input order.
   /// Never throws for a bad model: its error is in its result. Throws std::invalid_argument
-  /// when options.names is neither empty nor one name per input.
+  /// when options.names or options.meshes is neither empty nor one per input.
   std::vector<ModelResult> run(const std::vector<std::filesystem::path>& inputs,
                                std::shared_ptr<const RunSettings> settings,
                                const PipelineOptions& options = {});

@@ -10,13 +10,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
-#include <unistd.h>
 #include <yaml-cpp/yaml.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -37,33 +35,6 @@ namespace papercraft::python {
 namespace {
 
 constexpr const char* kArrays = "<arrays>";
-
-// A folder of its own under the system's temporary folder, removed with this object.
-class PrivateFolder {
- public:
-  PrivateFolder() {
-    static std::atomic<long> counter{0};
-    path_ = std::filesystem::temp_directory_path() /
-            ("papercraft-py-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~PrivateFolder() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
-
-std::string replace_all(std::string text, const std::string& from, const std::string& to) {
-  if (from.empty()) return text;
-  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  return text;
-}
 
 // An array's shape as numpy prints it: "(4, 2)".
 std::string shape_of(const py::array& a) {
@@ -108,18 +79,20 @@ py::array_t<long long, py::array::c_style> checked_faces(const py::array& f, py:
   return a;
 }
 
-void write_off(const std::filesystem::path& path, const py::array_t<double, py::array::c_style>& v,
-               const py::array_t<long long, py::array::c_style>& f) {
-  std::FILE* out = std::fopen(path.c_str(), "w");
-  if (out == nullptr) throw IOException(path.string() + ": cannot write");
-  std::fprintf(out, "OFF\n%zd %zd 0\n", v.shape(0), f.shape(0));
+// The checked arrays as a mesh in memory.
+std::shared_ptr<const TriangleMesh> mesh_of(const py::array_t<double, py::array::c_style>& v,
+                                            const py::array_t<long long, py::array::c_style>& f) {
+  auto mesh = std::make_shared<TriangleMesh>();
   const double* p = v.data();
+  mesh->vertices.reserve(v.shape(0));
   for (py::ssize_t i = 0; i < v.shape(0); ++i)
-    std::fprintf(out, "%.17g %.17g %.17g\n", p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    mesh->vertices.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
   const long long* t = f.data();
+  mesh->triangles.reserve(f.shape(0));
   for (py::ssize_t i = 0; i < f.shape(0); ++i)
-    std::fprintf(out, "3 %lld %lld %lld\n", t[3 * i], t[3 * i + 1], t[3 * i + 2]);
-  if (std::fclose(out) != 0) throw IOException(path.string() + ": cannot write");
+    mesh->triangles.push_back({static_cast<int>(t[3 * i]), static_cast<int>(t[3 * i + 1]),
+                               static_cast<int>(t[3 * i + 2])});
+  return mesh;
 }
 
 // A Python value as YAML.
@@ -255,7 +228,8 @@ RunOutput run(const py::array& vertices, const py::array& faces, const std::stri
   const auto f = checked_faces(faces, v.shape(0));
   if (name.empty() || name.find('/') != std::string::npos || name[0] == '.')
     throw py::value_error("name must be a plain folder name, got '" + name + "'");
-  if (threads < 0) throw py::value_error("threads must be at least 0, got " + std::to_string(threads));
+  if (threads < 0)
+    throw py::value_error("threads must be at least 0, got " + std::to_string(threads));
   PipelineConfig pipeline_config = config_of(config, node_params);
   RunRequest request;
   request.tolerance = tolerance;
@@ -263,45 +237,49 @@ RunOutput run(const py::array& vertices, const py::array& faces, const std::stri
   request.threads = threads;
   for (const auto& [key, value] : paper) {
     const std::string k = py::str(key);
-    if (k == "min_width_mm") request.min_width_mm = value.cast<double>();
-    else if (k == "min_area_mm2") request.min_area_mm2 = value.cast<double>();
-    else if (k == "scale") request.scale = value.cast<double>();
-    else if (k == "max_pages") request.max_pages = value.cast<int>();
-    else if (k == "allow_large_tolerance") request.allow_large_tolerance = value.cast<bool>();
-    else throw py::value_error("unknown parameter '" + k + "'");
+    if (k == "min_width_mm")
+      request.min_width_mm = value.cast<double>();
+    else if (k == "min_area_mm2")
+      request.min_area_mm2 = value.cast<double>();
+    else if (k == "scale")
+      request.scale = value.cast<double>();
+    else if (k == "max_pages")
+      request.max_pages = value.cast<int>();
+    else if (k == "allow_large_tolerance")
+      request.allow_large_tolerance = value.cast<bool>();
+    else
+      throw py::value_error("unknown parameter '" + k + "'");
   }
   if (request.scale) request.height_mm.reset();
-  const PrivateFolder folder;
-  const std::filesystem::path input = folder.path() / (name + ".off");
-  write_off(input, v, f);
-  request.output = folder.path() / "out";
+  // Nothing is written: the mesh goes in as arrays, the files come back in memory.
+  request.output = "<memory>";
   const std::shared_ptr<RunSettings> settings = run_settings(request, pipeline_config);
-  std::filesystem::create_directories(request.output);
+  settings->keep_in_memory = true;
+
+  if (v.shape(0) > std::numeric_limits<int>::max() - 1)
+    throw py::value_error("vertices: more than " +
+                          std::to_string(std::numeric_limits<int>::max() - 1) + " vertices");
+  const std::shared_ptr<const TriangleMesh> mesh = mesh_of(v, f);
 
   RunOutput output;
   output.name = name;
+  std::map<std::string, std::string> files;
   {
     py::gil_scoped_release release;
     Pipeline pipeline(std::move(pipeline_config), builtin_registry());
     PipelineOptions options;
     options.threads = settings->threads;
     options.names = {name};
-    output.result = pipeline.run({input}, settings, options).at(0);
+    options.meshes = {mesh};
+    options.on_model_done = [&files](const ModelRun& model, const ModelResult&) {
+      files = model.files();
+    };
+    output.result = pipeline.run({kArrays}, settings, options).at(0);
   }
-  output.result.input = kArrays;
+  for (const auto& [file, bytes] : files) output.files.emplace(file, py::bytes(bytes));
   if (!output.result.ok) {
-    const std::string error = replace_all(output.result.error, input.string(), kArrays);
-    if (output.result.internal_error) throw std::runtime_error(error);
-    throw py::value_error(error);
-  }
-  const std::filesystem::path dir = request.output / name;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (!entry.is_regular_file()) continue;
-    std::ifstream in(entry.path(), std::ios::binary);
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (entry.path().filename() == "report.json")
-      bytes = replace_all(bytes, input.string(), kArrays);
-    output.files.emplace(entry.path().filename().string(), py::bytes(bytes));
+    if (output.result.internal_error) throw std::runtime_error(output.result.error);
+    throw py::value_error(output.result.error);
   }
   return output;
 }

@@ -73,13 +73,18 @@ void fill_triangle(BakedImage& image, const std::array<Vec2, 3>& corners, Point 
     const double py = image.origin.y() + (y + 0.5) * image.pixel_mm;
     double lo_x = -1e300, hi_x = 1e300;
     // weight(px) = slope * px + offset for wb, wc and wa = 1 - wb - wc.
-    const double sb = (c - a).y() / area, ob = (-a.x() * (c - a).y() - (py - a.y()) * (c - a).x()) / area;
-    const double sc = -(b - a).y() / area, oc = ((b - a).x() * (py - a.y()) + a.x() * (b - a).y()) / area;
+    const double sb = (c - a).y() / area,
+                 ob = (-a.x() * (c - a).y() - (py - a.y()) * (c - a).x()) / area;
+    const double sc = -(b - a).y() / area,
+                 oc = ((b - a).x() * (py - a.y()) + a.x() * (b - a).y()) / area;
     const double slopes[3] = {sb, sc, -sb - sc}, offsets[3] = {ob, oc, 1 - ob - oc};
     for (int k = 0; k < 3; ++k) {
-      if (slopes[k] > 0) lo_x = std::max(lo_x, -offsets[k] / slopes[k]);
-      else if (slopes[k] < 0) hi_x = std::min(hi_x, -offsets[k] / slopes[k]);
-      else if (offsets[k] < -1e-9) return {1, 0};
+      if (slopes[k] > 0)
+        lo_x = std::max(lo_x, -offsets[k] / slopes[k]);
+      else if (slopes[k] < 0)
+        hi_x = std::min(hi_x, -offsets[k] / slopes[k]);
+      else if (offsets[k] < -1e-9)
+        return {1, 0};
     }
     if (lo_x > hi_x) return {1, 0};
     const double first = (lo_x - image.origin.x()) / image.pixel_mm - 0.5;
@@ -252,8 +257,7 @@ bool SurfaceSampler::colour_among(const Vec3& p, const Vec3& centre,
     const Triangle& tri = mesh.triangles[t];
     const TriangleClosestPoint c = closest_point_on_triangle(
         p, mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]);
-    if (c.squared_distance < best_squared ||
-        (c.squared_distance == best_squared && t < best)) {
+    if (c.squared_distance < best_squared || (c.squared_distance == best_squared && t < best)) {
       best_squared = c.squared_distance;
       best = t;
       weights = c.barycentric;
@@ -343,13 +347,7 @@ std::string png_bytes(const BakedImage& image) {
                 std::size_t(image.width) * 4);
   cairo_surface_t* surface = cairo_image_surface_create_for_data(data.data(), CAIRO_FORMAT_ARGB32,
                                                                  image.width, image.height, stride);
-  cairo_surface_write_to_png_stream(
-      surface,
-      [](void* closure, const unsigned char* chunk, unsigned int length) {
-        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(chunk), length);
-        return CAIRO_STATUS_SUCCESS;
-      },
-      &bytes);
+  bytes = papercraft::png_bytes(surface);
   cairo_surface_destroy(surface);
   return bytes;
 }

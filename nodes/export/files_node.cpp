@@ -6,7 +6,6 @@
 
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
-
 #include <time.h>
 
 #include <algorithm>
@@ -57,8 +56,9 @@ std::vector<std::shared_ptr<const Image>> material_images(ModelRun& model,
     if (material.texture.empty()) continue;
     try {
       images[m] = std::make_shared<const Image>(
-          material.texture_bytes ? decode_image(material.texture, *material.texture_bytes, max_pixels)
-                                 : load_image(material.texture, max_pixels));
+          material.texture_bytes
+              ? decode_image(material.texture, *material.texture_bytes, max_pixels)
+              : load_image(material.texture, max_pixels));
     } catch (const std::exception& e) {
       const std::string text = "texture of material '" + printable_utf8(material.name) +
                                "' not printed: " + printable_utf8(e.what());
@@ -235,14 +235,12 @@ void register_export_files(Registry& registry) {
            const Pattern& pattern = in.get<Pattern>();
            const ModelStrips& strips = *pattern.strips;
            ModelRun& model = *in.model;
-           const std::filesystem::path dir = model.output_dir();
            if (wants(formats, "obj")) {
              std::vector<const RuledStrip*> strips3d;
              for (const auto& s : strips.strips3d) strips3d.push_back(s->strip.get());
-             write_file_atomic(dir / "approximation.obj", approximation_obj(strips3d));
+             model.write_file("approximation.obj", approximation_obj(strips3d));
            }
-           if (wants(formats, "json"))
-             write_file_atomic(dir / "strips.json", strips_json(strips.flat));
+           if (wants(formats, "json")) model.write_file("strips.json", strips_json(strips.flat));
            if (wants(formats, "ply") && strips.model) {
              TriangleMesh all;
              for (const auto& s : strips.strips3d) {
@@ -257,8 +255,8 @@ void register_export_files(Registry& registry) {
              double worst = 0.0;
              for (double d : distances) worst = std::max(worst, d);
              model.update([worst](ModelRecord& record) { record.max_vertex_distance = worst; });
-             write_file_atomic(dir / "error.ply",
-                               error_ply(*strips.model->mesh, distances, model.tolerance()));
+             model.write_file("error.ply",
+                              error_ply(*strips.model->mesh, distances, model.tolerance()));
            }
            if (pattern.layout) {
              const PatternLayout& layout = *pattern.layout;
@@ -303,29 +301,26 @@ void register_export_files(Registry& registry) {
                  });
                }
              }
-             if (wants(formats, "json"))
-               write_file_atomic(dir / "pieces.json", pieces_json(layout));
+             if (wants(formats, "json")) model.write_file("pieces.json", pieces_json(layout));
              if (wants(formats, "svg")) {
                for (std::size_t page = 0; page < layout.pages.size(); ++page) {
                  const std::string number = std::to_string(page + 1);
                  const std::string name =
                      "pattern-" + std::string(number.size() < 2 ? 1 : 0, '0') + number + ".svg";
-                 write_file_atomic(dir / name,
-                                   pattern_page_svg(layout, static_cast<int>(page), page_style));
+                 model.write_file(name,
+                                  pattern_page_svg(layout, static_cast<int>(page), page_style));
                }
              }
              if (wants(formats, "pdf")) {
                const std::vector<GuidePiece> guide = guide_pieces(layout, strips.flat);
-               write_via_temporary(dir / "pattern.pdf", [&](const std::filesystem::path& tmp) {
-                 write_pattern_pdf(layout, tmp, page_style, &guide);
+               model.write_file("pattern.pdf", [&](std::ostream& out) {
+                 write_pattern_pdf(layout, out, page_style, &guide);
                });
                if (!layout.pages.empty())
-                 write_via_temporary(dir / "guide.png", [&](const std::filesystem::path& tmp) {
-                   write_guide_png(guide, layout.page, model.name, tmp);
-                 });
+                 model.write_file("guide.png", guide_png(guide, layout.page, model.name));
              }
            }
-           write_file_atomic(dir / "report.json", model_report(model).dump(2) + "\n");
+           model.write_file("report.json", model_report(model).dump(2) + "\n");
          });
        }});
 }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/errors.h"
+#include "nodes/export/image.h"
 
 namespace papercraft {
 namespace {
@@ -271,8 +272,8 @@ void draw_guide(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSi
   cairo_restore(cr);
 }
 
-void write_guide_png(const std::vector<GuidePiece>& pieces, const PageSize& page,
-                     const std::string& title, const std::filesystem::path& path, double dpi) {
+std::string guide_png(const std::vector<GuidePiece>& pieces, const PageSize& page,
+                      const std::string& title, double dpi) {
   const double pixels_per_mm = dpi / 25.4;
   const int w = static_cast<int>(std::ceil(page.width_mm * pixels_per_mm));
   const int h = static_cast<int>(std::ceil(page.height_mm * pixels_per_mm));
@@ -283,11 +284,10 @@ void write_guide_png(const std::vector<GuidePiece>& pieces, const PageSize& page
   cairo_scale(cr, pixels_per_mm, pixels_per_mm);
   draw_guide(cr, pieces, page, title, "sans-serif");
   cairo_destroy(cr);
-  const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
+  std::string bytes = png_bytes(surface);
   cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw IOException("cannot write PNG '" + path.string() +
-                      "': " + cairo_status_to_string(status));
+  if (bytes.empty()) throw IOException("guide.png: cairo could not encode the PNG");
+  return bytes;
 }
 
 }  // namespace papercraft

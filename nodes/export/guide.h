@@ -32,10 +32,8 @@ std::vector<GuidePiece> guide_pieces(const PatternLayout& layout,
 void draw_guide(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSize& page,
                 const std::string& title, const std::string& font);
 
-/// The guide as a PNG of the page at `dpi`, written to `path` (the caller renames).
-/// \throws IOException if the file cannot be written.
-void write_guide_png(const std::vector<GuidePiece>& pieces, const PageSize& page,
-                     const std::string& title, const std::filesystem::path& path,
-                     double dpi = 100.0);
+/// The guide as a PNG of the page at `dpi`: the file's bytes.
+std::string guide_png(const std::vector<GuidePiece>& pieces, const PageSize& page,
+                      const std::string& title, double dpi = 100.0);
 
 }  // namespace papercraft

@@ -170,6 +170,19 @@ Vec3 Image::sample(const Vec2& uv) const {
   return Vec3(channel[0], channel[1], channel[2]) / 255.0;
 }
 
+std::string png_bytes(cairo_surface_t* surface) {
+  std::string bytes;
+  const cairo_status_t status = cairo_surface_write_to_png_stream(
+      surface,
+      [](void* closure, const unsigned char* chunk, unsigned int length) {
+        static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(chunk), length);
+        return CAIRO_STATUS_SUCCESS;
+      },
+      &bytes);
+  if (status != CAIRO_STATUS_SUCCESS) bytes.clear();
+  return bytes;
+}
+
 Image load_image(const std::filesystem::path& path, long max_pixels) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) fail(path, "no such file");

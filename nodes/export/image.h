@@ -10,6 +10,8 @@
 
 #include "core/triangle_mesh.h"
 
+typedef struct _cairo_surface cairo_surface_t;
+
 namespace papercraft {
 
 /// 8-bit RGB pixels, row by row from the top.
@@ -33,5 +35,8 @@ Image load_image(const std::filesystem::path& path, long max_pixels);
 /// \throws IOException naming `name` as load_image does.
 Image decode_image(const std::string& name, const std::vector<std::uint8_t>& bytes,
                    long max_pixels);
+
+/// A cairo image surface encoded as PNG: the file's bytes (empty if cairo fails).
+std::string png_bytes(cairo_surface_t* surface);
 
 }  // namespace papercraft

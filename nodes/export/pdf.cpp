@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <string>
 
@@ -94,6 +95,13 @@ void draw_images(cairo_t* cr, const std::vector<BakedImage>& images) {
   }
 }
 
+// cairo's write function: appends to the std::ostream `closure`.
+cairo_status_t write_to_stream(void* closure, const unsigned char* data, unsigned int length) {
+  auto& out = *static_cast<std::ostream*>(closure);
+  out.write(reinterpret_cast<const char*>(data), length);
+  return out ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
 };
@@ -103,15 +111,14 @@ struct ContextDeleter {
 
 }  // namespace
 
-void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
-                       const StyleOptions& style, const std::vector<GuidePiece>* guide) {
+void write_pattern_pdf(const PatternLayout& layout, std::ostream& out, const StyleOptions& style,
+                       const std::vector<GuidePiece>* guide, const std::string& what) {
   const double width = layout.page.width_mm * kPointsPerMm;
   const double height = layout.page.height_mm * kPointsPerMm;
   std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
-      cairo_pdf_surface_create(path.c_str(), width, height));
+      cairo_pdf_surface_create_for_stream(write_to_stream, &out, width, height));
   auto fail = [&](cairo_status_t status) {
-    throw IOException("cannot write PDF '" + path.string() +
-                      "': " + cairo_status_to_string(status));
+    throw IOException("cannot write PDF '" + what + "': " + cairo_status_to_string(status));
   };
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     fail(cairo_surface_status(surface.get()));
@@ -140,6 +147,15 @@ void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path&
   cairo_surface_finish(surface.get());
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     fail(cairo_surface_status(surface.get()));
+}
+
+void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
+                       const StyleOptions& style, const std::vector<GuidePiece>* guide) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw IOException("cannot write PDF '" + path.string() + "': cannot open the file");
+  write_pattern_pdf(layout, out, style, guide, path.string());
+  out.close();
+  if (!out) throw IOException("cannot write PDF '" + path.string() + "': write error");
 }
 
 }  // namespace papercraft

@@ -68,8 +68,9 @@ RawAppearance raw_appearance(const RawMesh& raw, const Prescan& scan,
     a.materials = raw.materials;
     a.face_material = raw.face_material;
   } else if (scan.format == Format::ply && !scan.ply_texture.empty()) {
-    a.materials.push_back(
-        {scan.ply_texture, (path.parent_path() / scan.ply_texture).lexically_normal().string()});
+    a.materials.push_back({scan.ply_texture,
+                           (path.parent_path() / scan.ply_texture).lexically_normal().string(),
+                           nullptr});
     a.face_material.assign(raw.n_faces(), 0);
   } else if (scan.format == Format::obj && !raw.textures.empty()) {
     const auto names = material_names(scan.material_library);
@@ -80,7 +81,7 @@ RawAppearance raw_appearance(const RawMesh& raw, const Prescan& scan,
       index[id] = static_cast<int>(a.materials.size());
       a.materials.push_back(
           {named != names.end() ? named->second : file,
-           (scan.material_library.parent_path() / file).lexically_normal().string()});
+           (scan.material_library.parent_path() / file).lexically_normal().string(), nullptr});
     }
     a.face_material.assign(raw.n_faces(), -1);
     for (std::size_t f = 0; f < raw.face_texture.size() && f < raw.n_faces(); ++f) {
@@ -378,11 +379,29 @@ LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& optio
         break;
       case Format::gltf:
       case Format::threemf:
+      case Format::arrays:
         break;
     }
   }
   if (!scan.read_natively) raw = read_with_openmesh(path, file, scan);
   return validate_and_build(raw, scan, options, file, path);
+}
+
+LoadedMesh load_arrays(const TriangleMesh& mesh, const std::string& name,
+                       const LoadOptions& options) {
+  using namespace load_internal;
+  RawMesh raw;
+  raw.positions.reserve(mesh.vertices.size());
+  for (const Vec3& p : mesh.vertices) raw.positions.emplace_back(p.x(), p.y(), p.z());
+  raw.corners.reserve(3 * mesh.triangles.size());
+  raw.face_start.reserve(mesh.triangles.size() + 1);
+  for (const Triangle& t : mesh.triangles) {
+    raw.corners.insert(raw.corners.end(), t.begin(), t.end());
+    raw.face_start.push_back(raw.corners.size());
+  }
+  if (raw.n_faces() == 0) throw_invalid(name, "the mesh has no faces");
+  const Prescan scan = natively_read(Format::arrays, raw, name, options);
+  return validate_and_build(raw, scan, options, name, std::filesystem::path());
 }
 
 }  // namespace papercraft

@@ -32,6 +32,7 @@
 
 #include "core/appearance.h"
 #include "core/mesh.h"
+#include "core/triangle_mesh.h"
 
 namespace papercraft {
 
@@ -112,5 +113,12 @@ struct LoadedMesh {
 ///   duplicate faces are removed; or (with repair off) duplicate or inconsistently oriented
 ///   faces.
 LoadedMesh load_mesh(const std::filesystem::path& path, const LoadOptions& options = {});
+
+/// A mesh given in memory (vertex positions, triangles), validated and repaired as load_mesh
+/// does a file's; `name` starts every message as a file's path does.
+/// \throws InvalidInputException as load_mesh: no faces, more than options.max_faces,
+///   non-finite coordinates, out-of-range indices, what the repair cannot heal.
+LoadedMesh load_arrays(const TriangleMesh& mesh, const std::string& name,
+                       const LoadOptions& options = {});
 
 }  // namespace papercraft

@@ -49,34 +49,35 @@ void register_load_openmesh(Registry& registry) {
           .add(
               "max_faces", [](O & o) -> auto& { return o.max_faces; }, "refuse larger meshes",
               at_least(1));
-  registry.add({.name = "load.openmesh",
-                .summary = "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
-                .input = MessageType::of<Job>(),
-                .outputs = {{"out", MessageType::of<Model>()}},
-                .params = table.specs(),
-                .create = [](const Params& params, const NodeContext&) {
-                  const LoadOptions options = table.read(params);
-                  return make_body([options](const Envelope& in, Emitter& out) {
-                    const Job& job = in.get<Job>();
-                    LoadedMesh loaded = load_mesh(job.input, options);
-                    for (const auto& repair : loaded.repairs) {
-                      spdlog::warn("{}: {}", job.input.string(), repair);
-                      in.model->note(repair);
-                    }
-                    Model model;
-                    model.summary = summarize(loaded.mesh, loaded.has_uvs);
-                    if (!(model.summary.largest_side > 0)) {
-                      throw InvalidInputException(
-                          job.input.string() +
-                          ": all vertices coincide (the bounding box is a point)");
-                    }
-                    model.texture_path = loaded.texture_path;
-                    model.appearance =
-                        std::make_shared<const SurfaceAppearance>(std::move(loaded.appearance));
-                    model.mesh = std::make_shared<const Mesh>(std::move(loaded.mesh));
-                    out.emit("out", std::move(model));
-                  });
-                }});
+  registry.add(
+      {.name = "load.openmesh",
+       .summary = "read OBJ/OFF/PLY/STL (ascii and binary) with OpenMesh, validate",
+       .input = MessageType::of<Job>(),
+       .outputs = {{"out", MessageType::of<Model>()}},
+       .params = table.specs(),
+       .create = [](const Params& params, const NodeContext&) {
+         const LoadOptions options = table.read(params);
+         return make_body([options](const Envelope& in, Emitter& out) {
+           const Job& job = in.get<Job>();
+           LoadedMesh loaded = job.mesh ? load_arrays(*job.mesh, job.input.string(), options)
+                                        : load_mesh(job.input, options);
+           for (const auto& repair : loaded.repairs) {
+             spdlog::warn("{}: {}", job.input.string(), repair);
+             in.model->note(repair);
+           }
+           Model model;
+           model.summary = summarize(loaded.mesh, loaded.has_uvs);
+           if (!(model.summary.largest_side > 0)) {
+             throw InvalidInputException(job.input.string() +
+                                         ": all vertices coincide (the bounding box is a point)");
+           }
+           model.texture_path = loaded.texture_path;
+           model.appearance =
+               std::make_shared<const SurfaceAppearance>(std::move(loaded.appearance));
+           model.mesh = std::make_shared<const Mesh>(std::move(loaded.mesh));
+           out.emit("out", std::move(model));
+         });
+       }});
 }
 
 }  // namespace papercraft

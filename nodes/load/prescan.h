@@ -13,7 +13,7 @@
 namespace papercraft::load_internal {
 
 /// The formats load_mesh reads, chosen by the file's extension.
-enum class Format { obj, off, ply, stl, gltf, threemf };
+enum class Format { obj, off, ply, stl, gltf, threemf, arrays };  // arrays: load_arrays
 
 /// What the pre-scan found: the records OpenMesh's reader must report, and what the later steps
 /// need to know about the file.

@@ -1,11 +1,9 @@
 #pragma once
 // Shared by the segment node adapters: one Part message per segment.
 
-#include <filesystem>
 #include <memory>
 #include <vector>
 
-#include "core/atomic_file.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/node.h"
@@ -17,11 +15,7 @@ namespace papercraft {
 inline void emit_parts(const Envelope& in, Emitter& out, std::vector<Mesh> parts,
                        bool write_parts_ply = false) {
   auto model = in.get_shared<Model>();
-  if (write_parts_ply) {
-    const std::filesystem::path dir = in.model->output_dir();
-    std::filesystem::create_directories(dir);
-    write_file_atomic(dir / "parts.ply", parts_ply(parts));
-  }
+  if (write_parts_ply) in.model->write_file("parts.ply", parts_ply(parts));
   const int count = static_cast<int>(parts.size());
   in.model->update([count](ModelRecord& record) { record.segments = count; });
   for (std::size_t i = 0; i < parts.size(); ++i) {

@@ -76,6 +76,20 @@ def test_load_gives_the_loaded_mesh(tmp_path):
     assert np.array_equal(V2, V) and np.array_equal(F2, F)
 
 
+def test_run_writes_no_file(tmp_path, monkeypatch):
+    # Neither in the working folder nor in the temporary folder: the arrays go in and the files
+    # come back in memory.
+    (tmp_path / "cwd").mkdir()
+    (tmp_path / "tmp").mkdir()
+    monkeypatch.chdir(tmp_path / "cwd")
+    monkeypatch.setenv("TMPDIR", str(tmp_path / "tmp"))
+    V, F = torus(rings=12, sides=8)
+    result = papercraft.run(V, F, name="small", threads=2)
+    assert result.certified and result.files["pattern.pdf"].startswith(b"%PDF-")
+    assert result.report["input"]["path"] == "<arrays>"
+    assert list((tmp_path / "cwd").iterdir()) == [] and list((tmp_path / "tmp").iterdir()) == []
+
+
 def test_no_file_is_left_and_write_makes_a_folder_summary_reads(tmp_path):
     V, F = torus(rings=12, sides=8)
     result = papercraft.run(V, F, name="small")
