@@ -6,8 +6,10 @@
 //
 // Files:
 //   - a generated torus (core/generate.h; default 1000 x 750, 1.5M faces, change with
-//     PAPERCRAFT_LOAD_TORUS=SEGMENTSxTUBE_SEGMENTS), written once to a temporary binary PLY
-//     and ascii OFF and removed at exit;
+//     PAPERCRAFT_LOAD_TORUS=SEGMENTSxTUBE_SEGMENTS), written once to a temporary binary PLY,
+//     ascii OFF and GLB (float positions, 32-bit indices, as exporters write a large mesh) and
+//     removed at exit; the GLB has no plain OpenMesh reader, so the summary sets it against the
+//     binary PLY of the same mesh, both through load_mesh;
 //   - every *.off in the folder named by PAPERCRAFT_MESHES (sorted by name), one benchmark
 //     pair per file. Files load_mesh refuses are not registered; they are counted and listed
 //     with their messages in the summary.
@@ -27,6 +29,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -107,7 +110,63 @@ void add_file(BenchFile file) {
     if (!g_min_time_given) bench->MinTime(file.generated ? 2.0 : 0.2);
   };
   configure(benchmark::RegisterBenchmark(("load/" + file.label).c_str(), load_ours, file));
-  configure(benchmark::RegisterBenchmark(("openmesh/" + file.label).c_str(), load_plain, file));
+  if (file.path.extension() != ".glb")
+    configure(benchmark::RegisterBenchmark(("openmesh/" + file.label).c_str(), load_plain, file));
+}
+
+// A GLB of `mesh` (one node, one indexed triangle primitive), written by hand: the JSON chunk
+// and the binary chunk, each padded to 4 bytes.
+bool write_glb(const Mesh& mesh, const fs::path& path) {
+  std::string bin;
+  auto put = [&bin](const void* data, std::size_t size) {
+    bin.append(static_cast<const char*>(data), size);
+  };
+  Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+  for (auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+    put(xyz, sizeof xyz);
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], double(xyz[k]));
+      hi[k] = std::max(hi[k], double(xyz[k]));
+    }
+  }
+  const std::size_t positions = bin.size();
+  for (auto f : mesh.faces())
+    for (auto v : f.vertices()) {
+      const std::uint32_t index = static_cast<std::uint32_t>(v.idx());
+      put(&index, sizeof index);
+    }
+  const std::size_t indices = bin.size() - positions;
+  char json[2048];
+  std::snprintf(
+      json, sizeof json,
+      "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
+      "\"nodes\":[{\"mesh\":0}],\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},"
+      "\"indices\":1}]}],\"buffers\":[{\"byteLength\":%zu}],\"bufferViews\":["
+      "{\"buffer\":0,\"byteOffset\":0,\"byteLength\":%zu,\"target\":34962},"
+      "{\"buffer\":0,\"byteOffset\":%zu,\"byteLength\":%zu,\"target\":34963}],"
+      "\"accessors\":[{\"bufferView\":0,\"componentType\":5126,\"count\":%zu,\"type\":\"VEC3\","
+      "\"min\":[%.9g,%.9g,%.9g],\"max\":[%.9g,%.9g,%.9g]},"
+      "{\"bufferView\":1,\"componentType\":5125,\"count\":%zu,\"type\":\"SCALAR\"}]}",
+      bin.size(), positions, positions, indices, mesh.n_vertices(), lo[0], lo[1], lo[2], hi[0],
+      hi[1], hi[2], indices / 4);
+  std::string text = json;
+  text.resize((text.size() + 3) / 4 * 4, ' ');
+  bin.resize((bin.size() + 3) / 4 * 4, '\0');
+  std::FILE* out = std::fopen(path.c_str(), "wb");
+  if (!out) return false;
+  auto word = [out](std::uint32_t w) { std::fwrite(&w, 4, 1, out); };
+  word(0x46546C67);  // "glTF"
+  word(2);
+  word(static_cast<std::uint32_t>(12 + 8 + text.size() + 8 + bin.size()));
+  word(static_cast<std::uint32_t>(text.size()));
+  word(0x4E4F534A);  // "JSON"
+  std::fwrite(text.data(), 1, text.size(), out);
+  word(static_cast<std::uint32_t>(bin.size()));
+  word(0x004E4942);  // "BIN"
+  std::fwrite(bin.data(), 1, bin.size(), out);
+  return std::fclose(out) == 0;
 }
 
 void generate_files() {
@@ -134,8 +193,14 @@ void generate_files() {
     std::fprintf(stderr, "cannot write the generated torus to %s\n", g_temporary_dir.c_str());
     std::exit(1);
   }
+  const fs::path glb = g_temporary_dir / (stem + ".glb");
+  if (!write_glb(mesh, glb)) {
+    std::fprintf(stderr, "cannot write the generated torus to %s\n", glb.c_str());
+    std::exit(1);
+  }
   add_file({"generated/" + stem + ".ply", ply, 0, true});
   add_file({"generated/" + stem + ".off", off, 0, true});
+  add_file({"generated/" + stem + ".glb", glb, 0, true});
 }
 
 void add_mesh_folder() {
@@ -203,6 +268,18 @@ class SummaryReporter : public benchmark::ConsoleReporter {
       ours_total += t_ours;
       plain_total += t_plain;
       faces_total += faces;
+    }
+    // A scene format against the binary PLY of the same mesh, both through load_mesh.
+    for (const BenchFile& file : g_files) {
+      if (file.path.extension() != ".glb") continue;
+      fs::path ply_label = file.label;
+      ply_label.replace_extension(".ply");
+      const auto glb = seconds_.find("load/" + file.label);
+      const auto ply = seconds_.find("load/" + ply_label.string());
+      if (glb == seconds_.end() || ply == seconds_.end()) continue;
+      const double t_glb = median(glb->second), t_ply = median(ply->second);
+      std::fprintf(out, "%s: %.3f ms, the binary PLY of the same mesh %.3f ms; ratio %.2f\n",
+                   file.label.c_str(), 1e3 * t_glb, 1e3 * t_ply, t_glb / t_ply);
     }
     if (measured > 0) {
       std::fprintf(out,
