@@ -174,6 +174,7 @@ struct RunOutput {
   std::string name;
   std::map<std::string, py::bytes> files;
   ModelResult result;
+  double started_at = 0.0, finished_at = 0.0;  // the run's, unix seconds
 
   void write(const std::string& folder) const {
     const std::filesystem::path out(folder);
@@ -189,12 +190,14 @@ struct RunOutput {
     std::filesystem::remove_all(final_dir, ec);
     std::filesystem::rename(partial, final_dir, ec);
     if (ec) throw IOException(final_dir.string() + ": cannot write: " + ec.message());
-    // run.json and run.jsonl, as `papercraft run` writes them.
+    // run.json and run.jsonl, as `papercraft run` writes them, with the run's own times.
     JournalOptions options;
     options.files = run_summary_files(out);
+    options.ran_from = started_at;
+    options.ran_to = finished_at;
     BatchJournal journal(options, {pending_row(name, kArrays)});
     journal.started(0);
-    BatchRow row = row_from_result(result, out, unix_seconds_now());
+    BatchRow row = row_from_result(result, out, finished_at);
     row.input = kArrays;
     journal.record(0, row);
     journal.close("");
@@ -274,7 +277,9 @@ RunOutput run(const py::array& vertices, const py::array& faces, const std::stri
     options.on_model_done = [&files](const ModelRun& model, const ModelResult&) {
       files = model.files();
     };
+    output.started_at = unix_seconds_now();
     output.result = pipeline.run({kArrays}, settings, options).at(0);
+    output.finished_at = unix_seconds_now();
   }
   for (const auto& [file, bytes] : files) output.files.emplace(file, py::bytes(bytes));
   if (!output.result.ok) {

@@ -13,7 +13,9 @@
 namespace papercraft {
 
 BatchJournal::BatchJournal(JournalOptions options, std::vector<BatchRow> rows)
-    : options_(std::move(options)), started_at_(unix_seconds_now()), rows_(std::move(rows)) {
+    : options_(std::move(options)),
+      started_at_(options_.ran_to > 0.0 ? options_.ran_from : unix_seconds_now()),
+      rows_(std::move(rows)) {
   write_summary(false);
   journal_fd_ = ::open(options_.files.journal.c_str(),
                        O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
@@ -71,7 +73,7 @@ BatchSummary BatchJournal::write_summary(bool complete) {
   summary.complete = complete;
   summary.interrupted_by = interrupted_by_;
   summary.started_at = started_at_;
-  summary.finished_at = unix_seconds_now();
+  summary.finished_at = options_.ran_to > 0.0 ? options_.ran_to : unix_seconds_now();
   {
     std::lock_guard lock(mutex_);
     summary.rows = rows_;

@@ -25,6 +25,9 @@ struct JournalOptions {
   std::chrono::milliseconds rewrite_interval{1000};
   /// Called on the journal's thread after the row of input `index` was appended.
   std::function<void(std::size_t index, const BatchRow& row)> on_recorded;
+  /// A run written down after it happened (the Python module's Result.write): when it started
+  /// and finished (unix seconds), the summary's times in place of the journal's own. 0: none.
+  double ran_from = 0.0, ran_to = 0.0;
 };
 
 class BatchJournal {

@@ -102,6 +102,10 @@ def test_no_file_is_left_and_write_makes_a_folder_summary_reads(tmp_path):
                              text=True)
     assert summary.returncode == 0, summary.stderr
     assert "small" in summary.stdout
+    # The summary times the run, not the write: about the seconds the run took.
+    run = json.loads((tmp_path / "out" / "run.json").read_text())
+    assert run["wall_seconds"] >= 0.8 * run["results"][0]["wall_seconds"] > 0
+    assert run["models_per_minute"] <= 60 / (0.8 * run["results"][0]["wall_seconds"])
     rows = json.loads((tmp_path / "out" / "batch.json").read_text())["results"]
     assert [r["name"] for r in rows] == ["small"] and rows[0]["status"] == "ok"
 
