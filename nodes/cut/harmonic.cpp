@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -188,6 +189,67 @@ double hole_split_value(const Eigen::VectorXd& f, const std::vector<int>& loop) 
   return 0.5 * (low + high);
 }
 
+namespace {
+
+// Slides the crossings `t` (per edge: the crossing's parameter from v0 to v1, -1 where the edge
+// is not crossed) along their edges, `passes` times in edge order, each to the point of its edge
+// nearest to a straight path between its two neighbours on the line (the crossings of the two
+// faces beside it). Faces with a corner on the line (`side` 0) end the line there.
+void straighten_crossings(const Mesh& part, const std::vector<int>& side, std::vector<double>& t,
+                          int passes) {
+  const int edges = static_cast<int>(part.n_edges());
+  std::vector<std::array<int, 2>> next(edges, {-1, -1});
+  std::vector<int> count(edges, 0);
+  for (auto face : part.faces()) {
+    int crossed[3], n = 0;
+    bool on_line = false;
+    for (auto h : face.halfedges()) {
+      if (side[h.to().idx()] == 0) on_line = true;
+      if (t[h.edge().idx()] >= 0) crossed[n++] = h.edge().idx();
+    }
+    if (on_line || n != 2) continue;
+    for (int k = 0; k < 2; ++k) {
+      const int e = crossed[k], other = crossed[1 - k];
+      if (count[e] < 2) next[e][count[e]] = other;
+      ++count[e];
+    }
+  }
+  // The ends of edge e (its first halfedge's, as a smart handle's v0() and v1()).
+  auto ends = [&](int e) {
+    const auto h = part.halfedge_handle(part.edge_handle(e), 0);
+    return std::array<Mesh::Point, 2>{part.point(part.from_vertex_handle(h)),
+                                     part.point(part.to_vertex_handle(h))};
+  };
+  auto point = [&](int e) {
+    const auto [a, b] = ends(e);
+    return Mesh::Point((1.0 - t[e]) * a + t[e] * b);
+  };
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int e = 0; e < edges; ++e) {
+      if (t[e] < 0 || count[e] != 2) continue;
+      const Mesh::Point p0 = point(next[e][0]), p1 = point(next[e][1]);
+      const auto [a, b] = ends(e);
+      auto length = [&](double s) {
+        const Mesh::Point p = (1.0 - s) * a + s * b;
+        return (p - p0).norm() + (p - p1).norm();
+      };
+      // The path's length is convex in s: a ternary search finds its least.
+      double lo = 0.0, hi = 1.0;
+      for (int i = 0; i < 40; ++i) {
+        const double m0 = lo + (hi - lo) / 3, m1 = hi - (hi - lo) / 3;
+        if (length(m0) <= length(m1))
+          hi = m1;
+        else
+          lo = m0;
+      }
+      // Strictly inside the edge: at a corner it would meet the line's other faces there.
+      t[e] = std::clamp(0.5 * (lo + hi), 1e-6, 1.0 - 1e-6);
+    }
+  }
+}
+
+}  // namespace
+
 std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, double value,
                                     const CutOptions& options) {
   require_no_deleted_elements(part, "cut_along_isoline");
@@ -215,19 +277,26 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
   for (int v = 0; v < n; ++v) side[v] = f[v] < value ? -1 : (f[v] > value ? 1 : 0);
   const double snap = std::max(options.snap_fraction, 1e-12);
   std::vector<char> snapped(n, 0);
-  auto crossing_parameter = [&](auto e) {
+  // Per crossed edge, where the line crosses it (from v0 to v1); -1 elsewhere.
+  std::vector<double> crossing(part.n_edges(), -1.0);
+  for (auto e : part.edges()) {
     const int a = e.v0().idx();
     const int b = e.v1().idx();
-    return (value - f[a]) / (f[b] - f[a]);
-  };
+    if (side[a] * side[b] < 0) crossing[e.idx()] = (value - f[a]) / (f[b] - f[a]);
+  }
+  if (options.straighten_passes > 0)
+    straighten_crossings(part, side, crossing, options.straighten_passes);
+  auto crossing_parameter = [&](auto e) { return crossing[e.idx()]; };
   for (auto e : part.edges()) {
     if (side[e.v0().idx()] * side[e.v1().idx()] >= 0) continue;
     const double t = crossing_parameter(e);
     // The nearer vertex snaps when within the fraction of the edge or within snap_distance.
     const double length = (part.point(e.v1()) - part.point(e.v0())).norm();
     const double near = std::max(snap, std::min(0.5, options.snap_distance / length));
-    if (t <= near && t <= 0.5) snapped[e.v0().idx()] = 1;
-    else if (t >= 1.0 - near) snapped[e.v1().idx()] = 1;
+    if (t <= near && t <= 0.5)
+      snapped[e.v0().idx()] = 1;
+    else if (t >= 1.0 - near)
+      snapped[e.v1().idx()] = 1;
   }
   for (int v = 0; v < n; ++v)
     if (snapped[v]) side[v] = 0;

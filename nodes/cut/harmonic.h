@@ -65,6 +65,14 @@ struct CutOptions {
   /// edge's length: repeated cuts near one vertex would otherwise leave ever shorter edges
   /// and triangles far below the tolerance (and below what rounding can orient). 0: off.
   double snap_distance = 0.0;
+  /// Passes that slide each crossing along its edge to the point that makes the cut shortest
+  /// between its two neighbours on the line (the line stays on the surface, one straight
+  /// segment per face): the exact iso-line zig-zags across long thin triangles (a coarsely
+  /// triangulated flat region), and a zig-zag cut prints as a sawtooth edge nobody can cut or
+  /// glue cleanly. Ends of the line (a crossing beside a vertex on the iso-line, or at the
+  /// part's boundary) stay. 0: the exact iso-line (the default: straightened cuts print fewer
+  /// sawtooth corners but move the cuts, which can cost strips; docs/stages/cut.md).
+  int straighten_passes = 0;
 };
 
 /// Cuts `part` along the iso-line f = value: each crossed edge gets one new vertex (position,

@@ -22,6 +22,12 @@ void register_cut_harmonic(Registry& registry) {
               "snap an iso-line crossing to a vertex within this fraction of the edge length",
               ParamRange{0.0, 0.5, false, true})
           .add(
+              "straighten_passes",
+              [](O & o) -> auto& { return o.cut.cut.cut.straighten_passes; },
+              "passes sliding each crossing along its edge to shorten a cut that zig-zags "
+              "across thin triangles (0: the exact iso-line)",
+              between(0, 100))
+          .add(
               "snap_tolerance", [](O & o) -> auto& { return o.cut.snap_tolerance; },
               "also snap crossings within this fraction of the tolerance of a vertex (no "
               "edges far shorter than the tolerance where cuts meet)",

@@ -1,4 +1,3 @@
-#include "core/labelled_soup.h"
 #include "nodes/cut/harmonic.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +10,7 @@
 #include <set>
 
 #include "core/errors.h"
+#include "core/labelled_soup.h"
 
 namespace papercraft {
 namespace {
@@ -536,6 +536,101 @@ TEST(Cut, HoleIsSplitOff) {
   }
   EXPECT_NEAR(total_area(parts), surface_area(holed), 1e-9 * surface_area(holed));
   EXPECT_GT(check_vertices_against_input(holed, f, value, parts), 0);
+}
+
+// The cut between two pieces of a disc-like part: the points of a's boundary loop that b holds
+// too (new vertices and input vertices on the line), in the loop's order.
+std::vector<Vec3> cut_polyline(const Mesh& a, const Mesh& b) {
+  std::set<std::array<double, 3>> in_b;
+  for (auto v : b.vertices()) in_b.insert({b.point(v)[0], b.point(v)[1], b.point(v)[2]});
+  Mesh::HalfedgeHandle start;
+  for (auto h : a.halfedges())
+    if (a.is_boundary(h)) {
+      start = h;
+      break;
+    }
+  std::vector<Vec3> loop;
+  std::vector<char> on_cut;
+  auto h = start;
+  do {
+    const auto p = a.point(a.to_vertex_handle(h));
+    loop.emplace_back(p[0], p[1], p[2]);
+    on_cut.push_back(in_b.count({p[0], p[1], p[2]}) ? 1 : 0);
+    h = a.next_halfedge_handle(h);
+  } while (h != start);
+  const std::size_t n = loop.size();
+  std::size_t first = 0;  // a point off the cut, so the cut is one run after it
+  while (first < n && on_cut[first]) ++first;
+  std::vector<Vec3> points;
+  for (std::size_t k = 1; k <= n; ++k)
+    if (on_cut[(first + k) % n]) points.push_back(loop[(first + k) % n]);
+  return points;
+}
+
+double polyline_length(const std::vector<Vec3>& points) {
+  double length = 0;
+  for (std::size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
+  return length;
+}
+
+// Corners of the polyline turning by more than `degrees`.
+int sharp_corners(const std::vector<Vec3>& points, double degrees) {
+  int count = 0;
+  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
+    const Vec3 a = points[i] - points[i - 1], b = points[i + 1] - points[i];
+    if (std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0)) > degrees * kPi / 180)
+      ++count;
+  }
+  return count;
+}
+
+// A field whose iso-line zig-zags across a flat grid (the middle row alternately above and below
+// the iso-value, as the harmonic field does across long thin triangles): the exact iso-line
+// turns sharply at almost every crossing; straightened, each crossing slides along its edge
+// and the cut runs nearly straight, still one new vertex per crossed edge, inside that edge,
+// with its texture coordinates where it lies, and the pieces still cover the part.
+TEST(Cut, StraighteningTakesTheZigZagOutOfACut) {
+  const int nx = 41;
+  const Mesh grid = flat_grid(nx, 3, 20.0, 2.0, 0.0);  // cells of 0.5 x 1
+  Eigen::VectorXd f(grid.n_vertices());
+  for (auto v : grid.vertices()) {
+    const int i = v.idx() % nx, j = v.idx() / nx;
+    f[v.idx()] = j == 1 ? 1.0 + (i % 2 ? 0.6 : -0.6) : j;
+  }
+  CutOptions exact, straight;
+  straight.straighten_passes = 4;
+  const auto zigzag = cut_along_isoline(grid, f, 1.0, exact);
+  const auto cut = cut_along_isoline(grid, f, 1.0, straight);
+  ASSERT_EQ(zigzag.size(), 2u);
+  ASSERT_EQ(cut.size(), 2u);
+  const std::vector<Vec3> before = cut_polyline(zigzag[0], zigzag[1]);
+  const std::vector<Vec3> after = cut_polyline(cut[0], cut[1]);
+  ASSERT_GE(after.size(), 2u);
+  EXPECT_GT(sharp_corners(before, 60), 10);
+  EXPECT_EQ(sharp_corners(after, 60), 0);
+  EXPECT_LT(polyline_length(after), 0.8 * polyline_length(before));
+  EXPECT_GT(polyline_length(after), 19.99);  // no shorter than the grid is wide
+  for (const Mesh& part : cut) expect_valid_manifold(part);
+  EXPECT_NEAR(total_area(cut), surface_area(grid), 1e-9 * surface_area(grid));
+  // Each new vertex lies inside one input edge (a crossing slid along it, or snapped to an
+  // input vertex), with the texture coordinates of where it lies.
+  for (auto v : cut[0].vertices()) {
+    if (input_vertex_of(cut[0], v) >= 0) continue;
+    const Mesh::Point q = cut[0].point(v);
+    int inside = 0;
+    for (auto e : grid.edges()) {
+      const auto a = grid.point(e.v0()), b = grid.point(e.v1());
+      const double t = OpenMesh::dot(q - a, b - a) / (b - a).sqrnorm();
+      if (t > 0.0 && t < 1.0 && (a + t * (b - a) - q).norm() < 1e-12) ++inside;
+    }
+    EXPECT_EQ(inside, 1) << q;
+  }
+  for (auto v : cut[0].vertices()) {
+    const auto p = cut[0].point(v);
+    const auto uv = cut[0].texcoord2D(v);
+    EXPECT_NEAR(uv[0], p[0] / 20.0, 1e-12);
+    EXPECT_NEAR(uv[1], p[1] / 2.0, 1e-12);
+  }
 }
 
 TEST(SplitConnectedComponents, SeparatesAndUnpinches) {
