@@ -10,11 +10,11 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/page_size.h"
 #include "core/printable_utf8.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
-#include "nodes/layout/pages.h"
 #include "runner/batch_journal.h"
 #include "runner/resume.h"
 #include "runner/sha256.h"

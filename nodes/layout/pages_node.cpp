@@ -4,6 +4,7 @@
 //   layout: {impl: layout.pages, params: {page: A4, margin_mm: 10}, to: [export]}
 
 #include "core/errors.h"
+#include "core/page_size.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
