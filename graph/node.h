@@ -15,8 +15,8 @@
 #include <typeindex>
 #include <vector>
 
+#include "engine/refine/refine.h"
 #include "graph/params.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 

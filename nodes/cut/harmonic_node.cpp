@@ -5,11 +5,11 @@
 //
 //   cut: {impl: cut.harmonic, params: {max_depth: 64}, back: [select]}
 
+#include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 

@@ -1,12 +1,12 @@
 #pragma once
-// Shared by the hausdorff node adapters: the engine's decision (nodes/refine/refine.h) on
+// Shared by the hausdorff node adapters: the engine's decision (engine/refine/refine.h) on
 // one (part, strip), emitted as an accept or a reject with the witness the cut needs.
 
+#include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/node.h"
 #include "graph/param_table.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 

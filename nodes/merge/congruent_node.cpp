@@ -17,13 +17,13 @@
 #include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/piece_width.h"
+#include "engine/refine/rejoin.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
 #include "nodes/merge/collect_node.h"
 #include "nodes/merge/congruent.h"
-#include "nodes/refine/rejoin.h"
 
 namespace papercraft {
 

@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "engine/refine/refine.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/refine/refine.h"
 #include "nodes/segment/feature.h"
 #include "nodes/segment/none.h"
 #include "nodes/segment/parts_node.h"

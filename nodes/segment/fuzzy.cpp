@@ -19,10 +19,10 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "engine/refine/refine.h"
 #include "nodes/segment/face_regions.h"
 #include "nodes/segment/labelled_surface.h"
 #include "nodes/segment/straighten.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 namespace {

@@ -1,4 +1,4 @@
-// The refinement engine (nodes/refine/refine.h) against the graph: the engine's one-call
+// The refinement engine (engine/refine/refine.h) against the graph: the engine's one-call
 // refinement and its strip count must make exactly what the graph's select, ruled, hausdorff
 // and cut nodes make of the same part, since the segmentation's estimates rely on it.
 
@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "core/generate.h"
+#include "engine/refine/refine.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
 #include "nodes/load/openmesh.h"
-#include "nodes/refine/refine.h"
 #include "nodes/segment/feature.h"
 #include "nodes/segment/none.h"
 #include "support/pipeline_run.h"

@@ -7,7 +7,7 @@
 
 #include "core/errors.h"
 #include "core/generate.h"
-#include "nodes/refine/refine.h"
+#include "engine/refine/refine.h"
 #include "nodes/segment/fuzzy.h"
 #include "nodes/segment/parts_ply.h"
 #include "tests/segment/partition_checks.h"
