@@ -16,12 +16,30 @@
 
 namespace papercraft {
 
-StripBoundaries select_strip_boundaries(const Mesh& part, double tolerance,
-                                        const RefineOptions& options) {
+namespace {
+
+void require_tolerance(const RefineOptions& options, const char* step) {
+  if (!(options.tolerance > 0.0)) {
+    throw InvalidInputException(std::string(step) +
+                                ": the refinement needs a positive tolerance (RefineOptions::"
+                                "tolerance), got " +
+                                std::to_string(options.tolerance));
+  }
+}
+
+}  // namespace
+
+RefineOptions at_tolerance(RefineOptions options, double tolerance) {
+  options.tolerance = tolerance;
+  return options;
+}
+
+StripBoundaries select_strip_boundaries(const Mesh& part, const RefineOptions& options) {
+  require_tolerance(options, "select_strip_boundaries");
   BoundarySelection selection;
   if (options.select.exhaustive) {
     ExhaustiveSelectOptions exhaustive;
-    exhaustive.error_bound = options.select.precision * tolerance;
+    exhaustive.error_bound = options.select.precision * options.tolerance;
     exhaustive.twist = options.twist;
     exhaustive.decide = options.decide;
     selection = select_exhaustive(part, exhaustive);
@@ -57,39 +75,40 @@ RuledStrip build_strip(const Mesh& part, const StripBoundaries& boundaries,
 }
 
 StripVerdict decide_strip(const Mesh& part, const StripBoundaries& boundaries,
-                          const RuledStrip& strip, double tolerance, const RefineOptions& options) {
-  return judge_strip(part, strip, static_cast<int>(boundaries.holes.size()), tolerance,
+                          const RuledStrip& strip, const RefineOptions& options) {
+  require_tolerance(options, "decide_strip");
+  return judge_strip(part, strip, static_cast<int>(boundaries.holes.size()), options.tolerance,
                      options.decide);
 }
 
-std::optional<double> one_flat_strip_area(const Mesh& piece, double tolerance,
-                                          const RefineOptions& options) {
-  const std::optional<JoinedStrip> one = one_strip_of(piece, tolerance, options);
+std::optional<double> one_flat_strip_area(const Mesh& piece, const RefineOptions& options) {
+  const std::optional<JoinedStrip> one = one_strip_of(piece, options);
   if (!one) return std::nullopt;
   return flat_area(one->flat);
 }
 
-std::optional<JoinedStrip> one_strip_of(const Mesh& piece, double tolerance,
-                                        const RefineOptions& options) {
+std::optional<JoinedStrip> one_strip_of(const Mesh& piece, const RefineOptions& options) {
   JoinedStrip one;
   RefinedStrip& refined = one.refined;
-  refined.boundaries = select_strip_boundaries(piece, tolerance, options);
+  refined.boundaries = select_strip_boundaries(piece, options);
   // A hole left over is a rejection (judge_strip), known before the strip is built.
   if (!refined.boundaries.holes.empty()) return std::nullopt;
   refined.strip = build_strip(piece, refined.boundaries, options);
   if (refined.strip.mesh.empty()) return std::nullopt;
   std::vector<FlatStrip> flat = unfold_strip(refined.strip, 0, 0);
   if (flat.size() != 1) return std::nullopt;
-  refined.verdict = decide_strip(piece, refined.boundaries, refined.strip, tolerance, options);
+  refined.verdict = decide_strip(piece, refined.boundaries, refined.strip, options);
   if (!refined.verdict.accept) return std::nullopt;
   one.flat = std::move(flat.front());
   return one;
 }
 
 std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& boundaries,
-                                     const StripVerdict& verdict, int depth, double tolerance,
+                                     const StripVerdict& verdict, int depth,
                                      const RefineOptions& options, const std::string& part_name,
                                      const PieceLimits& limits) {
+  require_tolerance(options, "cut_rejected_piece");
+  const double tolerance = options.tolerance;
   auto fail = [&](const std::string& why) {
     std::ostringstream message;
     message << "part " << part_name << " (" << part.n_faces()
@@ -107,10 +126,10 @@ std::vector<Mesh> cut_rejected_piece(const Mesh& part, const StripBoundaries& bo
   // that lies flat in one piece, and how large is that piece on paper?
   RefineOptions quick = options;
   quick.decide.bounded.locate_maximum = false;  // the decision only
-  auto one_strip = [&](const Mesh& piece) { return one_flat_strip_area(piece, tolerance, quick); };
+  auto one_strip = [&](const Mesh& piece) { return one_flat_strip_area(piece, quick); };
   // And how many holes would a piece have, each to be cut through again?
   auto holes = [&](const Mesh& piece) {
-    return static_cast<int>(select_strip_boundaries(piece, tolerance, quick).holes.size());
+    return static_cast<int>(select_strip_boundaries(piece, quick).holes.size());
   };
   WitnessCut cut =
       cut_rejected_part(part, boundaries.first, boundaries.first_closed, boundaries.second,
@@ -142,22 +161,22 @@ struct Pending {
 // takes each accepted strip and returns false to stop; `room(pending_count)` is asked after
 // each cut and returns false to stop. Returns false when stopped.
 template <class Accept, class Room>
-bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions& options,
-                        const PieceLimits& limits, Accept accept, Room room) {
+bool refine_depth_first(const Mesh& root, const RefineOptions& options, const PieceLimits& limits,
+                        Accept accept, Room room) {
   std::vector<Pending> stack;
   stack.push_back({root, "", 0});
   while (!stack.empty()) {
     Pending item = std::move(stack.back());
     stack.pop_back();
-    StripBoundaries boundaries = select_strip_boundaries(item.piece, tolerance, options);
+    StripBoundaries boundaries = select_strip_boundaries(item.piece, options);
     RuledStrip strip = build_strip(item.piece, boundaries, options);
-    StripVerdict verdict = decide_strip(item.piece, boundaries, strip, tolerance, options);
+    StripVerdict verdict = decide_strip(item.piece, boundaries, strip, options);
     if (verdict.accept) {
       if (!accept(std::move(item), std::move(boundaries), std::move(strip), verdict)) return false;
       continue;
     }
     std::vector<Mesh> pieces =
-        cut_rejected_piece(item.piece, boundaries, verdict, item.depth, tolerance, options,
+        cut_rejected_piece(item.piece, boundaries, verdict, item.depth, options,
                            item.path.empty() ? "(whole)" : item.path, limits);
     if (!room(stack.size() + pieces.size())) return false;
     // Pushed last first, so the pieces are refined in cut order.
@@ -170,11 +189,11 @@ bool refine_depth_first(const Mesh& root, double tolerance, const RefineOptions&
 
 }  // namespace
 
-std::vector<RefinedStrip> refine_part(const Mesh& part, double tolerance,
-                                      const RefineOptions& options, const PieceLimits& limits) {
+std::vector<RefinedStrip> refine_part(const Mesh& part, const RefineOptions& options,
+                                      const PieceLimits& limits) {
   std::vector<RefinedStrip> strips;
   refine_depth_first(
-      part, tolerance, options, limits,
+      part, options, limits,
       [&](Pending&& item, StripBoundaries&& boundaries, RuledStrip&& strip,
           const StripVerdict& verdict) {
         strips.push_back({std::move(item.piece), std::move(item.path), item.depth,
@@ -185,12 +204,13 @@ std::vector<RefinedStrip> refine_part(const Mesh& part, double tolerance,
   return strips;
 }
 
-int count_strips(const Mesh& part, double tolerance, const RefineOptions& options, int cap,
+int count_strips(const Mesh& part, const RefineOptions& options, int cap,
                  const PieceLimits& limits) {
+  require_tolerance(options, "count_strips");  // a caller's mistake, not a part's failure
   int strips = 0;
   try {
     const bool finished = refine_depth_first(
-        part, tolerance, options, limits,
+        part, options, limits,
         [&](Pending&&, StripBoundaries&&, RuledStrip&&, const StripVerdict&) {
           return ++strips <= cap;
         },

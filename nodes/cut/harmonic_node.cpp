@@ -69,9 +69,10 @@ void register_cut_harmonic(Registry& registry) {
         return make_body([refine](const Envelope& in, Emitter& out) {
           const RejectedStrip& rejected = in.get<RejectedStrip>();
           const Part& parent = rejected.candidate->part;
-          std::vector<Mesh> pieces = cut_rejected_piece(
-              *parent.mesh, *rejected.candidate, rejected.verdict, parent.depth,
-              in.model->refinement_tolerance(), refine, parent.path, in.model->piece_limits());
+          std::vector<Mesh> pieces =
+              cut_rejected_piece(*parent.mesh, *rejected.candidate, rejected.verdict, parent.depth,
+                                 at_tolerance(refine, in.model->refinement_tolerance()),
+                                 parent.path, in.model->piece_limits());
           in.model->update([](ModelRecord& record) { ++record.cuts; });
           for (std::size_t i = 0; i < pieces.size(); ++i) {
             Part part;

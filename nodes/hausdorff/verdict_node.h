@@ -33,7 +33,7 @@ inline NodeSpec hausdorff_spec(std::string name, std::string summary, bool sampl
           const StripCandidate& candidate = in.get<StripCandidate>();
           const StripVerdict verdict =
               decide_strip(*candidate.candidate->part.mesh, *candidate.candidate, *candidate.strip,
-                           in.model->refinement_tolerance(), refine);
+                           at_tolerance(refine, in.model->refinement_tolerance()));
           if (verdict.accept) {
             AcceptedStrip accepted;
             accepted.candidate = candidate.candidate;

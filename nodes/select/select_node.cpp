@@ -32,8 +32,8 @@ NodeSpec select_spec(std::string name, std::string summary, bool exhaustive,
         return make_body([refine](const Envelope& in, Emitter& out) {
           const Part& part = in.get<Part>();
           Candidate candidate;
-          static_cast<StripBoundaries&>(candidate) =
-              select_strip_boundaries(*part.mesh, in.model->refinement_tolerance(), refine);
+          static_cast<StripBoundaries&>(candidate) = select_strip_boundaries(
+              *part.mesh, at_tolerance(refine, in.model->refinement_tolerance()));
           candidate.part = part;
           out.emit("out", std::move(candidate));
         });

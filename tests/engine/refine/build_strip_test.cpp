@@ -60,7 +60,7 @@ Mesh band() {
 
 TEST(BuildStrip, TheTraversalOfBThatTurnsTheStripInsideOutIsNotKept) {
   const Mesh part = band();
-  const StripBoundaries boundaries = select_strip_boundaries(part, 0.01, {});
+  const StripBoundaries boundaries = select_strip_boundaries(part, at_tolerance({}, 0.01));
   ASSERT_TRUE(boundaries.a.closed && boundaries.b.closed);
   // Each traversal of B forced on the twist search: one of them makes a strip whose B side
   // faces the other way (the case build_strip must catch), the other the right strip.
@@ -84,7 +84,7 @@ TEST(BuildStrip, AStripFacingTheOtherWayAllOverIsTurnedOver) {
   // The part's loops taken the other way round: the strip follows A, so it faces the other
   // way on both loops; and a fan from the far end of a disc taken the same way.
   const Mesh part = band();
-  StripBoundaries boundaries = select_strip_boundaries(part, 0.01, {});
+  StripBoundaries boundaries = select_strip_boundaries(part, at_tolerance({}, 0.01));
   for (auto* side : {&boundaries.first, &boundaries.second})
     std::reverse(side->begin(), side->end());
   for (auto* line : {&boundaries.a, &boundaries.b}) {
@@ -104,7 +104,7 @@ TEST(BuildStrip, AStripFacingTheOtherWayAllOverIsTurnedOver) {
     disc_mesh.vertices.emplace_back(std::cos(k * M_PI / 3), std::sin(k * M_PI / 3), 0.0);
   for (int k = 0; k < 6; ++k) disc_mesh.triangles.push_back({0, 1 + k, 1 + (k + 1) % 6});
   const Mesh disc = to_mesh(disc_mesh);
-  StripBoundaries fan = select_strip_boundaries(disc, 0.01, {});
+  StripBoundaries fan = select_strip_boundaries(disc, at_tolerance({}, 0.01));
   ASSERT_TRUE(fan.a.is_point() || fan.b.is_point());
   for (auto* side : {&fan.first, &fan.second}) std::reverse(side->begin(), side->end());
   for (auto* line : {&fan.a, &fan.b}) std::reverse(line->points.begin(), line->points.end());

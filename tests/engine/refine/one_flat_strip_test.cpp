@@ -68,8 +68,8 @@ Mesh barrel(double bulge, int rows) {
   return to_mesh(mesh);
 }
 
-RefineOptions decision_only() {
-  RefineOptions options;
+RefineOptions decision_only(double tolerance) {
+  RefineOptions options = at_tolerance({}, tolerance);
   options.decide.bounded.locate_maximum = false;
   return options;
 }
@@ -84,11 +84,11 @@ struct Apart {
 };
 
 Apart apart(const Mesh& piece) {
-  const RefineOptions options = decision_only();
-  const StripBoundaries sides = select_strip_boundaries(piece, kTolerance, options);
+  const RefineOptions options = decision_only(kTolerance);
+  const StripBoundaries sides = select_strip_boundaries(piece, options);
   const RuledStrip strip = build_strip(piece, sides, options);
   Apart result;
-  result.accept = decide_strip(piece, sides, strip, kTolerance, options).accept;
+  result.accept = decide_strip(piece, sides, strip, options).accept;
   result.flat_strips = unfold_strip(strip, 0, 0).size();
   return result;
 }
@@ -98,7 +98,7 @@ TEST(OneFlatStrip, AStripThatOverlapsItselfOnPaperIsNotOne) {
   const Apart steps = apart(ramp);
   ASSERT_TRUE(steps.accept) << "the band is one strip within the tolerance";
   EXPECT_EQ(steps.flat_strips, 2u) << "on paper it curls round by more than a turn";
-  EXPECT_FALSE(one_flat_strip_area(ramp, kTolerance, decision_only()).has_value());
+  EXPECT_FALSE(one_flat_strip_area(ramp, decision_only(kTolerance)).has_value());
 }
 
 TEST(OneFlatStrip, AStripThatLiesFlatIsOne) {
@@ -106,7 +106,7 @@ TEST(OneFlatStrip, AStripThatLiesFlatIsOne) {
   const Apart steps = apart(ramp);
   ASSERT_TRUE(steps.accept);
   EXPECT_EQ(steps.flat_strips, 1u);
-  const std::optional<double> paper = one_flat_strip_area(ramp, kTolerance, decision_only());
+  const std::optional<double> paper = one_flat_strip_area(ramp, decision_only(kTolerance));
   ASSERT_TRUE(paper.has_value());
   EXPECT_NEAR(*paper, surface_area(to_triangle_mesh(ramp)), 1e-9 * *paper)
       << "a flat piece prints at its own area";
@@ -121,17 +121,17 @@ TEST(OneFlatStrip, ACurvedStripPrintsAtTheAreaOfItsRulings) {
   const double surface = surface_area(to_triangle_mesh(swollen));
   const double cylinder = 96 * 2.0 * std::sin(kPi / 96);  // the 96-gon's perimeter, height 1
   ASSERT_GT(surface, 1.05 * cylinder);
-  const std::optional<double> paper = one_flat_strip_area(swollen, 0.25, decision_only());
+  const std::optional<double> paper = one_flat_strip_area(swollen, decision_only(0.25));
   ASSERT_TRUE(paper.has_value()) << "within 0.25 the barrel is one strip";
   EXPECT_NEAR(*paper, cylinder, 1e-9 * cylinder);
   // Below the bulge it is not one strip.
-  EXPECT_FALSE(one_flat_strip_area(swollen, 0.1, decision_only()).has_value());
+  EXPECT_FALSE(one_flat_strip_area(swollen, decision_only(0.1)).has_value());
   // The look-ahead: a piece that reaches min_area on the surface but not on paper falls short
   // by the paper's lack.
   PieceLimits limits;
   limits.min_area = 0.5 * (surface + cylinder);
   const OneStrip one_strip = [](const Mesh& piece) {
-    return one_flat_strip_area(piece, 0.25, decision_only());
+    return one_flat_strip_area(piece, decision_only(0.25));
   };
   EXPECT_NEAR(piece_shortfall_ahead(swollen, limits, one_strip), 1.0 - cylinder / limits.min_area,
               1e-9);
@@ -142,7 +142,7 @@ TEST(OneFlatStrip, ACurvedStripPrintsAtTheAreaOfItsRulings) {
 // as its halves would; one that lies flat in one piece meets the limits.
 TEST(OneFlatStrip, TheLookAheadCountsTheUnfoldingsSplit) {
   const OneStrip one_strip = [](const Mesh& piece) {
-    return one_flat_strip_area(piece, kTolerance, decision_only());
+    return one_flat_strip_area(piece, decision_only(kTolerance));
   };
   for (double amplitude : {0.0, 0.1}) {
     const Mesh ramp = ruffled_band(amplitude);

@@ -54,7 +54,7 @@ TEST(Rejoin, ACylinderCutIntoTwoBandsGluesBackIntoOneStrip) {
   EXPECT_EQ(euler_characteristic(*glued), 0);
   EXPECT_NEAR(surface_area(*glued), surface_area(band) + surface_area(rest), 1e-12);
 
-  const std::optional<JoinedStrip> one = one_strip_of(*glued, 0.01, RefineOptions{});
+  const std::optional<JoinedStrip> one = one_strip_of(*glued, at_tolerance({}, 0.01));
   ASSERT_TRUE(one.has_value());
   EXPECT_TRUE(one->refined.verdict.accept);
   EXPECT_TRUE(one->refined.verdict.certified);
@@ -88,7 +88,7 @@ TEST(Rejoin, ACurvedUnionBeyondTheToleranceIsNoStrip) {
   const std::optional<Mesh> north = glue_pieces(north_east, north_west);
   ASSERT_TRUE(north.has_value());
   EXPECT_EQ(boundary_loops(*north).size(), 1u);
-  EXPECT_FALSE(one_strip_of(*north, 0.001, RefineOptions{}).has_value());
+  EXPECT_FALSE(one_strip_of(*north, at_tolerance({}, 0.001)).has_value());
 }
 
 }  // namespace

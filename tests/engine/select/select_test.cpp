@@ -283,7 +283,7 @@ TEST(SelectGeodesic, ABandOneTriangleWideIsSplitIntoItsTwoSides) {
   const auto n = static_cast<long>(loops[0].size());
   EXPECT_EQ((at(selection.first.front()) - at(selection.second.front()) + n) % n, 1);
   // The truck is 1.67 long: 2% of it. The band is one strip, within that.
-  const std::vector<RefinedStrip> strips = refine_part(part, 0.0333506);
+  const std::vector<RefinedStrip> strips = refine_part(part, at_tolerance({}, 0.0333506));
   ASSERT_EQ(strips.size(), 1u);
   EXPECT_TRUE(strips[0].verdict.accept);
   EXPECT_LE(strips[0].verdict.upper_bound, 0.0333506);
