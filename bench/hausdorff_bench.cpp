@@ -39,11 +39,11 @@
 
 #include "core/bvh.h"
 #include "core/mesh.h"
+#include "engine/hausdorff/bounded.h"
+#include "engine/hausdorff/sampled.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
-#include "nodes/hausdorff/bounded.h"
-#include "nodes/hausdorff/sampled.h"
 #include "nodes/hausdorff/verdict_node.h"
 
 #ifdef PAPERCRAFT_HAVE_CGAL

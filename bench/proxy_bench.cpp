@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/mesh.h"
-#include "nodes/hausdorff/bounded.h"
+#include "engine/hausdorff/bounded.h"
 #include "nodes/load/openmesh.h"
 #include "nodes/proxy/decimate.h"
 

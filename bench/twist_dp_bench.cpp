@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "nodes/ruled/twist_dp.h"
+#include "engine/ruled/twist_dp.h"
 
 namespace {
 

@@ -8,15 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "core/page_size.h"
 #include "core/strip.h"
 
 namespace papercraft {
-
-/// A sheet of paper in millimetres.
-struct PageSize {
-  double width_mm = 210.0;
-  double height_mm = 297.0;
-};
 
 /// Text to draw: centred on `position` (page mm), `angle_degrees` clockwise on the page
 /// from left-to-right (the SVG rotate() sense), always in (-90, 90] so it reads upright.

@@ -10,8 +10,8 @@
 #include "core/mesh.h"
 #include "core/pattern.h"
 #include "core/strip.h"
+#include "engine/refine/refine.h"
 #include "graph/model_record.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 

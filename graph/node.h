@@ -15,8 +15,8 @@
 #include <typeindex>
 #include <vector>
 
+#include "engine/refine/refine.h"
 #include "graph/params.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 
@@ -99,8 +99,9 @@ struct OutputPort {
 struct NodeContext {
   /// The refinement as this pipeline configures it: every node that contributes to it
   /// (NodeSpec::refinement: the select, ruled, hausdorff and cut stages) has written its
-  /// parameters in, defaults stand for the stages the config lacks. Nodes that run the
-  /// refinement themselves (segment estimates) use it, so they refine as the graph does.
+  /// parameters in, defaults stand for the stages the config lacks. It holds no tolerance:
+  /// each model brings its own (at_tolerance). Nodes that run the refinement themselves
+  /// (segment estimates) use it, so they refine as the graph does.
   RefineOptions refine;
 };
 

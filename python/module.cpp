@@ -235,7 +235,7 @@ RunOutput run(const py::array& vertices, const py::array& faces, const std::stri
     throw py::value_error("threads must be at least 0, got " + std::to_string(threads));
   PipelineConfig pipeline_config = config_of(config, node_params);
   RunRequest request;
-  request.tolerance = tolerance;
+  if (!tolerance.empty()) request.tolerance = parse_tolerance_option(tolerance);
   request.height_mm = height_mm;
   request.threads = threads;
   for (const auto& [key, value] : paper) {

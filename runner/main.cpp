@@ -137,7 +137,8 @@ int main_impl(int argc, char** argv) {
       "run", "run the pipeline on mesh files (OBJ, OFF, PLY, STL, glTF/GLB, 3MF)");
   run->add_option("meshes", run_inputs, "input meshes")->required();
   run->add_option("-c,--config", run_request.config_file, "pipeline YAML (default: builtin)");
-  run->add_option("-t,--tolerance", run_request.tolerance,
+  std::string tolerance_text;
+  run->add_option("-t,--tolerance", tolerance_text,
                   "Hausdorff tolerance: 2% of the largest side, or absolute like 0.004");
   run->add_option("-o,--out", run_request.output, "output folder (default: out)");
   run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
@@ -246,6 +247,7 @@ int main_impl(int argc, char** argv) {
   try {
     if (*run) {
       for (const auto& input : run_inputs) run_request.inputs.emplace_back(input);
+      if (!tolerance_text.empty()) run_request.tolerance = parse_tolerance_option(tolerance_text);
       if (!height_text.empty()) {
         try {
           run_request.height_mm = parse_length_mm(height_text);
@@ -287,7 +289,7 @@ int main_impl(int argc, char** argv) {
       request.shard_index = shard.index;
       request.shard_count = shard.count;
       if (job.config) request.config_file = job.config->string();
-      if (job.tolerance) request.tolerance = job.tolerance->to_string();
+      request.tolerance = job.tolerance;
       request.output = job.output;
       request.threads = batch_threads >= 0 ? batch_threads : job.threads.value_or(-1);
       request.height_mm = job.height_mm;

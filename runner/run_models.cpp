@@ -10,11 +10,11 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/page_size.h"
 #include "core/printable_utf8.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
-#include "nodes/layout/pages.h"
 #include "runner/batch_journal.h"
 #include "runner/resume.h"
 #include "runner/sha256.h"
@@ -61,21 +61,24 @@ void require_writable_folder(const std::filesystem::path& folder) {
 
 }  // namespace
 
+ToleranceSpec parse_tolerance_option(const std::string& text) {
+  try {
+    return parse_tolerance(text);
+  } catch (const std::invalid_argument& e) {
+    throw InvalidInputException(std::string("--tolerance: ") + e.what());
+  }
+}
+
 std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const PipelineConfig& config) {
   auto settings = std::make_shared<RunSettings>();
-  settings->tolerance = config.tolerance.value_or(ToleranceSpec{});
-  if (!request.tolerance.empty()) {
-    try {
-      settings->tolerance = parse_tolerance(request.tolerance);
-    } catch (const std::invalid_argument& e) {
-      throw InvalidInputException(std::string("--tolerance: ") + e.what());
-    }
-  }
+  settings->tolerance = request.tolerance.value_or(config.tolerance.value_or(ToleranceSpec{}));
   const ToleranceSpec& tolerance = settings->tolerance;
   if (tolerance.relative && tolerance.value > kLargestTolerance && !request.allow_large_tolerance) {
+    const char* given = !request.tolerance                         ? "the config's tolerance "
+                        : request.kind == RunRequest::Kind::kBatch ? "the job's tolerance "
+                                                                   : "--tolerance ";
     throw InvalidInputException(
-        std::string(request.tolerance.empty() ? "the config's tolerance " : "--tolerance ") +
-        tolerance.to_string() +
+        given + tolerance.to_string() +
         " is above 50% of the largest side, where the strips no longer resemble the model; "
         "give a smaller tolerance or --allow-large-tolerance");
   }

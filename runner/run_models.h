@@ -10,6 +10,7 @@
 
 #include "graph/config.h"
 #include "graph/model_run.h"
+#include "graph/tolerance.h"
 #include "runner/progress_display.h"
 
 namespace papercraft {
@@ -25,9 +26,9 @@ struct RunRequest {
   enum class Kind { kRun, kBatch };
   Kind kind = Kind::kRun;
   std::vector<std::filesystem::path> inputs;
-  std::vector<std::string> names;  // output folder names, one per input
-  std::string config_file;         // empty: builtin default
-  std::string tolerance;           // empty: from the config
+  std::vector<std::string> names;          // output folder names, one per input
+  std::string config_file;                 // empty: builtin default
+  std::optional<ToleranceSpec> tolerance;  // else the config's
   std::filesystem::path output = "out";
   int threads = -1;  // -1: from the config
   // Paper: each set only when given (command line or job file); else the config's, else the
@@ -41,9 +42,13 @@ struct RunRequest {
   double grace_seconds = 10.0;  // SIGINT/SIGTERM: how long running models may finish
 };
 
+/// A tolerance given as text ("2%", "0.004") on the command line or to the Python module.
+/// \throws InvalidInputException, naming --tolerance, when it does not parse.
+ToleranceSpec parse_tolerance_option(const std::string& text);
+
 /// The settings every model of `request` runs with: its tolerance, paper and threads over the
-/// config's. Throws InvalidInputException for a tolerance that does not parse or one above 50%
-/// of the largest side without allow_large_tolerance.
+/// config's. Throws InvalidInputException for a tolerance above 50% of the largest side without
+/// allow_large_tolerance.
 std::shared_ptr<RunSettings> run_settings(const RunRequest& request, const PipelineConfig& config);
 
 /// Runs the request and returns the exit code. block_stop_signals() must have been called

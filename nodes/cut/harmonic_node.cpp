@@ -5,11 +5,11 @@
 //
 //   cut: {impl: cut.harmonic, params: {max_depth: 64}, back: [select]}
 
+#include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 
@@ -75,9 +75,10 @@ void register_cut_harmonic(Registry& registry) {
         return make_body([refine](const Envelope& in, Emitter& out) {
           const RejectedStrip& rejected = in.get<RejectedStrip>();
           const Part& parent = rejected.candidate->part;
-          std::vector<Mesh> pieces = cut_rejected_piece(
-              *parent.mesh, *rejected.candidate, rejected.verdict, parent.depth,
-              in.model->refinement_tolerance(), refine, parent.path, in.model->piece_limits());
+          std::vector<Mesh> pieces =
+              cut_rejected_piece(*parent.mesh, *rejected.candidate, rejected.verdict, parent.depth,
+                                 at_tolerance(refine, in.model->refinement_tolerance()),
+                                 parent.path, in.model->piece_limits());
           in.model->update([](ModelRecord& record) { ++record.cuts; });
           for (std::size_t i = 0; i < pieces.size(); ++i) {
             Part part;

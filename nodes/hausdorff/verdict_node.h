@@ -1,12 +1,12 @@
 #pragma once
-// Shared by the hausdorff node adapters: the engine's decision (nodes/refine/refine.h) on
+// Shared by the hausdorff node adapters: the engine's decision (engine/refine/refine.h) on
 // one (part, strip), emitted as an accept or a reject with the witness the cut needs.
 
+#include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/node.h"
 #include "graph/param_table.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 
@@ -33,7 +33,7 @@ inline NodeSpec hausdorff_spec(std::string name, std::string summary, bool sampl
           const StripCandidate& candidate = in.get<StripCandidate>();
           const StripVerdict verdict =
               decide_strip(*candidate.candidate->part.mesh, *candidate.candidate, *candidate.strip,
-                           in.model->refinement_tolerance(), refine);
+                           at_tolerance(refine, in.model->refinement_tolerance()));
           if (verdict.accept) {
             AcceptedStrip accepted;
             accepted.candidate = candidate.candidate;

@@ -3,8 +3,6 @@
 #include "nodes/layout/pages.h"
 
 #include <algorithm>
-#include <cctype>
-#include <charconv>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -145,43 +143,6 @@ Vec2 usable_area(const LayoutOptions& o) {
 }
 
 }  // namespace
-
-PageSize page_size_from_name(std::string_view name) {
-  std::string lower;
-  for (char c : name) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  static const std::map<std::string, PageSize> named = {
-      {"a3", {297.0, 420.0}},     {"a4", {210.0, 297.0}},    {"a5", {148.0, 210.0}},
-      {"letter", {215.9, 279.4}}, {"legal", {215.9, 355.6}}, {"tabloid", {279.4, 431.8}},
-  };
-  if (auto it = named.find(lower); it != named.end()) return it->second;
-  const std::size_t x = lower.find('x');
-  if (x != std::string::npos) {
-    double w = 0, h = 0;
-    const char* begin = lower.data();
-    const char* end = begin + lower.size();
-    auto [wend, werr] = std::from_chars(begin, begin + x, w);
-    auto [hend, herr] = std::from_chars(begin + x + 1, end, h);
-    if (werr == std::errc() && herr == std::errc() && wend == begin + x && hend == end && w > 0 &&
-        h > 0 && std::isfinite(w) && std::isfinite(h))
-      return {w, h};
-  }
-  throw InvalidInputException("unknown page size '" + std::string(name) +
-                              "': use A3, A4, A5, Letter, Legal, Tabloid or <width>x<height> in "
-                              "mm (e.g. 200x300)");
-}
-
-std::string page_size_name(const PageSize& page) {
-  static const std::pair<const char*, PageSize> named[] = {
-      {"A3", {297.0, 420.0}},     {"A4", {210.0, 297.0}},    {"A5", {148.0, 210.0}},
-      {"Letter", {215.9, 279.4}}, {"Legal", {215.9, 355.6}}, {"Tabloid", {279.4, 431.8}},
-  };
-  for (const auto& [name, size] : named) {
-    if (size.width_mm == page.width_mm && size.height_mm == page.height_mm) return name;
-  }
-  std::ostringstream text;
-  text << page.width_mm << "x" << page.height_mm;
-  return text.str();
-}
 
 double layout_scale(const std::vector<FlatStrip>& strips, const LayoutOptions& options) {
   validate_options(options);

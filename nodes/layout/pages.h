@@ -33,21 +33,12 @@
 
 #include <array>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "core/pattern.h"
 #include "core/strip.h"
 
 namespace papercraft {
-
-/// "A3", "A4", "A5", "Letter", "Legal", "Tabloid" (case-insensitive) or "<width>x<height>"
-/// in millimetres ("200x300"); portrait.
-/// \throws InvalidInputException for any other name or a non-positive size.
-PageSize page_size_from_name(std::string_view name);
-
-/// The name page_size_from_name reads back: "A4" for the named sizes, else "200x300".
-std::string page_size_name(const PageSize& page);
 
 enum class PackingMethod {
   Nest,      // true outlines at every nest_rotations step (nesting.h); MaxRects where that is fewer

@@ -5,6 +5,7 @@
 
 #include "core/effort.h"
 #include "core/errors.h"
+#include "core/page_size.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"

@@ -17,13 +17,13 @@
 #include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/piece_width.h"
+#include "engine/refine/rejoin.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
 #include "nodes/merge/collect_node.h"
 #include "nodes/merge/congruent.h"
-#include "nodes/refine/rejoin.h"
 
 namespace papercraft {
 
@@ -194,7 +194,8 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
                     ModelRun& model, const MergeOptions& options, const RefineOptions& refine) {
   const PieceLimits limits = model.piece_limits();
   const double scale = model.mm_per_unit();
-  RefineOptions decide_only = refine;  // the decision, not where the worst point lies
+  // The decision at the model's tolerance, not where the worst point lies.
+  RefineOptions decide_only = at_tolerance(refine, model.refinement_tolerance());
   decide_only.decide.bounded.locate_maximum = false;
   std::set<std::pair<const AcceptedStrip*, const AcceptedStrip*>> tried;
   for (int round = 0; round < kMostRejoins; ++round) {
@@ -213,7 +214,7 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
         std::optional<JoinedStrip> one;
         try {
           glued = glue_pieces(*mine->candidate->part.mesh, *other->candidate->part.mesh);
-          if (glued) one = one_strip_of(*glued, model.refinement_tolerance(), decide_only);
+          if (glued) one = one_strip_of(*glued, decide_only);
         } catch (const InvalidInputException& e) {
           spdlog::debug("{}: parts {} and {} glued: {}", model.name, mine->candidate->part.path,
                         other->candidate->part.path, e.what());

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/errors.h"
-#include "nodes/hausdorff/bounded.h"
+#include "engine/hausdorff/bounded.h"
 #include "nodes/proxy/collapse.h"
 
 namespace papercraft {

@@ -8,8 +8,9 @@
 // merged into it, allowed up to d^2 with d = decimation_share * e; collapses that turn a face by
 // more than 60 degrees are refused. Boundary vertices are locked, so boundaries and the topology
 // stay as they are. That is a heuristic; the certificate is the two-sided bounded Hausdorff
-// distance H(proxy, input), computed to within e / 10 (nodes/hausdorff/bounded.h) over the
-// triangles of both surfaces, and required <= e. A proxy that fails is made again with d halved, up to `attempts` times.
+// distance H(proxy, input), computed to within e / 10 (engine/hausdorff/bounded.h) over the
+// triangles of both surfaces, and required <= e. A proxy that fails is made again with d
+// halved, up to `attempts` times.
 //
 // With H(proxy, input) <= e and strips certified within tau - e of the proxy, the strips are
 // within tau of the input: the Hausdorff distance obeys the triangle inequality.

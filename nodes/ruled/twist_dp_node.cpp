@@ -3,10 +3,10 @@
 //
 //   ruled: {impl: ruled.twist_dp, to: [hausdorff]}
 
+#include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 

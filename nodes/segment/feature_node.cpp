@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "engine/refine/refine.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/refine/refine.h"
 #include "nodes/segment/feature.h"
 #include "nodes/segment/none.h"
 #include "nodes/segment/parts_node.h"
@@ -69,11 +69,12 @@ void register_segment_feature(Registry& registry) {
                       // boundary if the parts cost no more strips than the model whole. The parts
                       // are counted first, side by side; the model whole only below their total
                       // (so the usual loser on creased models stops early).
-                      const double tolerance = in.model->refinement_tolerance();
+                      const RefineOptions at_model =
+                          at_tolerance(refine, in.model->refinement_tolerance());
                       const PieceLimits limits = in.model->piece_limits();
                       std::vector<int> counts(parts.size());
                       tbb::parallel_for(std::size_t{0}, parts.size(), [&](std::size_t i) {
-                        counts[i] = count_strips(parts[i], tolerance, refine, 1 << 20, limits);
+                        counts[i] = count_strips(parts[i], at_model, 1 << 20, limits);
                       });
                       long part_strips = 0;
                       for (int count : counts) part_strips += count;
@@ -87,8 +88,7 @@ void register_segment_feature(Registry& registry) {
                           whole_strips = part_strips;
                           break;
                         }
-                        whole_strips +=
-                            count_strips(part, tolerance, refine, static_cast<int>(cap), limits);
+                        whole_strips += count_strips(part, at_model, static_cast<int>(cap), limits);
                         if (whole_strips >= part_strips) break;
                       }
                       if (whole_strips < part_strips) parts = std::move(whole);

@@ -19,10 +19,10 @@
 #include <unordered_map>
 
 #include "core/errors.h"
+#include "engine/refine/refine.h"
 #include "nodes/segment/face_regions.h"
 #include "nodes/segment/labelled_surface.h"
 #include "nodes/segment/straighten.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 namespace {
@@ -393,14 +393,14 @@ std::vector<int> decompose(const RegionGraph& region, const FaceGraph& graph,
 // several candidate decompositions, again as emitted, and by the hierarchies of the
 // alternative settings. An entry holds the exact count if it is at most the cap it was
 // computed with, else only that the count exceeds that cap, so a hit returns what a fresh call
-// would (the result does not depend on the threads). Keyed by an FNV-1a hash of the part's coordinates and
-// triangles: parts cut out of the same faces the same way are bit-identical meshes. A
-// collision (about 2^-64 a pair) could only mislead the choice of parts, never what is
-// certified: every strip is still decided against its own part.
+// would (the result does not depend on the threads). Keyed by an FNV-1a hash of the part's
+// coordinates and triangles: parts cut out of the same faces the same way are bit-identical meshes.
+// A collision (about 2^-64 a pair) could only mislead the choice of parts, never what is certified:
+// every strip is still decided against its own part.
 class EstimateCache {
  public:
   EstimateCache(double tolerance, const RefineOptions& refine, const PieceLimits& limits)
-      : tolerance_(tolerance), refine_(refine), limits_(limits) {}
+      : refine_(at_tolerance(refine, tolerance)), limits_(limits) {}
 
   int estimate(const Mesh& part, int cap) {
     const std::uint64_t key = geometry_hash(part);
@@ -413,7 +413,7 @@ class EstimateCache {
         if (cap <= computed_cap) return cap + 1;
       }
     }
-    const int count = count_strips(part, tolerance_, refine_, cap, limits_);
+    const int count = count_strips(part, refine_, cap, limits_);
     std::lock_guard lock(mutex_);
     const auto [it, inserted] = entries_.try_emplace(key, count, cap);
     if (!inserted) {
@@ -448,8 +448,7 @@ class EstimateCache {
     return hash;
   }
 
-  const double tolerance_;
-  const RefineOptions& refine_;
+  const RefineOptions refine_;
   const PieceLimits limits_;
   std::mutex mutex_;
   std::unordered_map<std::uint64_t, std::pair<int, int>> entries_;  // count, cap

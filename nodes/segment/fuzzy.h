@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/mesh.h"
-#include "nodes/refine/refine.h"
+#include "engine/refine/refine.h"
 
 namespace papercraft {
 
@@ -69,7 +69,7 @@ struct FuzzySegmentOptions {
   /// smaller than twice this is not decomposed further. In [0, 1).
   double min_area_fraction = 0.01;
   /// With parts == 0 and a positive value, each level of the hierarchy is judged by its cost:
-  /// the refinement (nodes/refine/refine.h, with `refine`) is run on the region and on its
+  /// the refinement (engine/refine/refine.h, with `refine`) is run on the region and on its
   /// parts at this absolute tolerance, and the decomposition
   /// (with or without the boundaries the rule above would drop) that makes the fewest strips
   /// is kept, none unless it makes fewer strips than the region whole. 0 turns this off.

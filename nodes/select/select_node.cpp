@@ -1,16 +1,16 @@
 // select.geodesic and select.exhaustive — choose the two boundaries of the strip for a part
-// (paper 3.2.1; the engine's first step, nodes/refine/refine.h): a closed part gets two
+// (paper 3.2.1; the engine's first step, engine/refine/refine.h): a closed part gets two
 // far-apart vertices, a part with one boundary gets it and its farthest vertex, a part with
 // several boundaries gets the pair farthest apart (geodesic) or the pair whose strip has the
 // lowest certified error (exhaustive).
 //
 //   select: {impl: select.geodesic, to: [ruled]}
 
+#include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/refine/refine.h"
 
 namespace papercraft {
 
@@ -32,8 +32,8 @@ NodeSpec select_spec(std::string name, std::string summary, bool exhaustive,
         return make_body([refine](const Envelope& in, Emitter& out) {
           const Part& part = in.get<Part>();
           Candidate candidate;
-          static_cast<StripBoundaries&>(candidate) =
-              select_strip_boundaries(*part.mesh, in.model->refinement_tolerance(), refine);
+          static_cast<StripBoundaries&>(candidate) = select_strip_boundaries(
+              *part.mesh, at_tolerance(refine, in.model->refinement_tolerance()));
           candidate.part = part;
           out.emit("out", std::move(candidate));
         });

@@ -3,10 +3,10 @@
 //
 //   unfold: {impl: unfold.sequential, to: [merge]}
 
+#include "engine/unfold/sequential.h"
 #include "graph/messages.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
-#include "nodes/unfold/sequential.h"
 
 namespace papercraft {
 

@@ -1,4 +1,4 @@
-// The refinement engine (nodes/refine/refine.h) against the graph: the engine's one-call
+// The refinement engine (engine/refine/refine.h) against the graph: the engine's one-call
 // refinement and its strip count must make exactly what the graph's select, ruled, hausdorff
 // and cut nodes make of the same part, since the segmentation's estimates rely on it.
 
@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "core/generate.h"
+#include "engine/refine/refine.h"
 #include "graph/config.h"
 #include "graph/pipeline.h"
 #include "graph/registry.h"
 #include "nodes/load/openmesh.h"
-#include "nodes/refine/refine.h"
 #include "nodes/segment/feature.h"
 #include "nodes/segment/none.h"
 #include "support/pipeline_run.h"
@@ -78,12 +78,12 @@ TEST_P(EngineMatchesGraph, SameStripCountOnEveryComponent) {
     SCOPED_TRACE(GetParam() + " at " + tolerance);
     const GraphRun graph = run_graph(mesh, tolerance, GetParam());
     ASSERT_GT(graph.strips, 0);
+    const RefineOptions at_graph = at_tolerance(refine, graph.tolerance);
     int counted = 0;
     std::size_t refined = 0;
     for (const Mesh& part : segment_none(graph.loaded)) {
-      counted += count_strips(part, graph.tolerance, refine, INT_MAX - 1, graph.limits);
-      const std::vector<RefinedStrip> strips =
-          refine_part(part, graph.tolerance, refine, graph.limits);
+      counted += count_strips(part, at_graph, INT_MAX - 1, graph.limits);
+      const std::vector<RefinedStrip> strips = refine_part(part, at_graph, graph.limits);
       refined += strips.size();
       for (const RefinedStrip& strip : strips) {
         EXPECT_TRUE(strip.verdict.accept);
@@ -95,9 +95,9 @@ TEST_P(EngineMatchesGraph, SameStripCountOnEveryComponent) {
     // The cap: one below the count reports cap + 1, the count itself is exact.
     if (graph.strips > 1) {
       const Mesh whole = segment_none(graph.loaded).front();
-      const int alone = count_strips(whole, graph.tolerance, refine, INT_MAX - 1, graph.limits);
-      EXPECT_EQ(count_strips(whole, graph.tolerance, refine, alone - 1, graph.limits), alone);
-      EXPECT_EQ(count_strips(whole, graph.tolerance, refine, alone, graph.limits), alone);
+      const int alone = count_strips(whole, at_graph, INT_MAX - 1, graph.limits);
+      EXPECT_EQ(count_strips(whole, at_graph, alone - 1, graph.limits), alone);
+      EXPECT_EQ(count_strips(whole, at_graph, alone, graph.limits), alone);
     }
   }
 }
@@ -122,7 +122,7 @@ TEST(EngineMatchesGraph, FeatureEstimateOfEachPartIsTheGraphsCount) {
     SCOPED_TRACE(std::string(shape) + ": " + std::to_string(parts.size()) + " feature parts");
     for (std::size_t i = 0; i < parts.size(); ++i) {
       const int estimate =
-          count_strips(parts[i], whole.tolerance, refine, INT_MAX - 1, whole.limits);
+          count_strips(parts[i], at_tolerance(refine, whole.tolerance), INT_MAX - 1, whole.limits);
       const std::string name = std::string(shape) + "_part" + std::to_string(i);
       std::ostringstream absolute;
       absolute.precision(17);

@@ -408,19 +408,6 @@ int count_folds(const PlacedPiece& piece, FoldKind kind) {
   return count;
 }
 
-TEST(LayoutPages, PageSizeNames) {
-  EXPECT_EQ(page_size_from_name("A4").width_mm, 210.0);
-  EXPECT_EQ(page_size_from_name("a4").height_mm, 297.0);
-  EXPECT_EQ(page_size_from_name("Letter").width_mm, 215.9);
-  EXPECT_EQ(page_size_from_name("A3").height_mm, 420.0);
-  const PageSize custom = page_size_from_name("300x450.5");
-  EXPECT_EQ(custom.width_mm, 300.0);
-  EXPECT_EQ(custom.height_mm, 450.5);
-  EXPECT_THROW(page_size_from_name("B7"), InvalidInputException);
-  EXPECT_THROW(page_size_from_name("0x100"), InvalidInputException);
-  EXPECT_THROW(page_size_from_name("100x"), InvalidInputException);
-}
-
 // A box: the band folds at three corners (the fourth is its seam), all convex: mountains.
 // Seams A (band with itself), T and B (band with caps): two labels and one tab each, the
 // tabs on the band (the lower strip id).

@@ -15,8 +15,8 @@
 #include "core/errors.h"
 #include "core/flat_boundary.h"
 #include "core/piece_width.h"
+#include "engine/unfold/sequential.h"
 #include "nlohmann/json.hpp"
-#include "nodes/unfold/sequential.h"
 #include "support/flat_strips_json.h"
 #include "support/unfold_checks.h"
 

@@ -265,6 +265,17 @@ TEST(BatchCli, ResumeSkipsOnlyWhatIsUnchanged) {
   EXPECT_EQ(rows.at("a").at("output"), (dir / "out/a").string());
 }
 
+// The job's tolerance reaches the models as written, every digit of it (not as printed back).
+TEST(BatchCli, JobToleranceKeepsEveryDigit) {
+  const auto dir = testing::fresh_temp_dir("job-tolerance");
+  generate("open_cylinder", dir / "a.obj");
+  std::ofstream(dir / "job.yaml") << "inputs: [a.obj]\noutput: out\ntolerance: 0.0123456789\n";
+  const auto r = run_command("batch " + (dir / "job.yaml").string() + " -q");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json report = read_json(dir / "out/a/report.json");
+  EXPECT_EQ(report.at("tolerance").at("absolute").get<double>(), 0.0123456789);
+}
+
 TEST(BatchCli, TwoShardsIntoOneFolderThenSummary) {
   const auto dir = testing::fresh_temp_dir("shards");
   for (const char* sub : {"a", "b"}) fs::create_directories(dir / sub);

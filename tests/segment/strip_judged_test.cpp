@@ -7,7 +7,7 @@
 
 #include "core/errors.h"
 #include "core/generate.h"
-#include "nodes/refine/refine.h"
+#include "engine/refine/refine.h"
 #include "nodes/segment/fuzzy.h"
 #include "nodes/segment/parts_ply.h"
 #include "tests/segment/partition_checks.h"
@@ -23,17 +23,17 @@ using testing::tagged_mesh;
 TEST(StripCount, AnOpenCylinderIsOneStrip) {
   // A cylinder is ruled: one strip between its two boundary circles.
   const Mesh mesh = tagged_mesh(open_cylinder());
-  EXPECT_EQ(count_strips(mesh, 0.01, {}, 100), 1);
+  EXPECT_EQ(count_strips(mesh, at_tolerance({}, 0.01), 100), 1);
 }
 
 TEST(StripCount, ASphereNeedsSeveralAndTheCapHolds) {
   const Mesh mesh = tagged_mesh(sphere({1.0, 3}));
-  const int strips = count_strips(mesh, 0.02, {}, 1000);
+  const int strips = count_strips(mesh, at_tolerance({}, 0.02), 1000);
   EXPECT_GT(strips, 1);
   EXPECT_LE(strips, 1000);
-  EXPECT_EQ(count_strips(mesh, 0.02, {}, strips), strips);
-  EXPECT_EQ(count_strips(mesh, 0.02, {}, strips - 1), strips);  // cap + 1
-  EXPECT_EQ(count_strips(mesh, 0.02, {}, 0), 1);
+  EXPECT_EQ(count_strips(mesh, at_tolerance({}, 0.02), strips), strips);
+  EXPECT_EQ(count_strips(mesh, at_tolerance({}, 0.02), strips - 1), strips);  // cap + 1
+  EXPECT_EQ(count_strips(mesh, at_tolerance({}, 0.02), 0), 1);
 }
 
 FuzzySegmentOptions judged(double tolerance) {
@@ -73,8 +73,8 @@ TEST(SegmentFuzzyByStrips, DumbbellPartitionIsValidAndThreadIndependent) {
   const std::vector<Mesh> parts = segment_fuzzy(mesh, plain);
   if (parts.size() > 1) {
     int sum = 0;
-    for (const Mesh& part : parts) sum += count_strips(part, 0.08, {}, 1000);
-    EXPECT_LT(sum, count_strips(mesh, 0.08, {}, 1000));
+    for (const Mesh& part : parts) sum += count_strips(part, at_tolerance({}, 0.08), 1000);
+    EXPECT_LT(sum, count_strips(mesh, at_tolerance({}, 0.08), 1000));
   }
 }
 
@@ -85,7 +85,7 @@ TEST(SegmentFuzzyByStrips, MergingNeighboursNeverCostsStrips) {
   constexpr double kTolerance = 0.08;
   auto cost = [](const std::vector<Mesh>& parts) {
     int sum = 0;
-    for (const Mesh& part : parts) sum += count_strips(part, kTolerance, {}, 1000);
+    for (const Mesh& part : parts) sum += count_strips(part, at_tolerance({}, kTolerance), 1000);
     return sum;
   };
   DumbbellOptions shape;
