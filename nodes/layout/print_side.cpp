@@ -61,7 +61,7 @@ void mirror_for_back_printing(PatternLayout& layout) {
         mirror_label(piece.number);
       }
   // Every page says which side to print on, the footer's right end where it was.
-  const std::string note = " - print on the back of the sheet";
+  const std::string note = " - print on the back";
   for (Page& page : layout.pages) {
     if (page.footer.text.empty()) continue;
     page.footer.text += note;

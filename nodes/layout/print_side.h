@@ -11,7 +11,7 @@ namespace papercraft {
 /// tabs (and tab textures), cut lines, marks, leaders and folds are mirrored; fold kinds are
 /// swapped (a mountain seen from the outside is a valley seen from the inside); labels and
 /// numbers keep their mirrored place and read left to right, upright; the scale bar and the
-/// footer stay where they are, the footer saying "print on the back of the sheet" (its right
+/// footer stay where they are, the footer saying "print on the back" (its right
 /// end kept). Sets layout.print_side to Back (the tab bases are then valley
 /// folds). Mirroring keeps every distance, so nothing comes to overlap.
 /// \pre layout.print_side == Front (a layout is mirrored once).

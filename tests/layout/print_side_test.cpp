@@ -61,7 +61,7 @@ TEST(PrintSide, BackPagesAreTheMirrorOfFrontPages) {
       const Page &f = front.pages[p], &b = back.pages[p];
       // Page furniture stays readable where it was; the footer says to print on the back and
       // ends where it did.
-      EXPECT_EQ(b.footer.text, f.footer.text + " - print on the back of the sheet");
+      EXPECT_EQ(b.footer.text, f.footer.text + " - print on the back");
       EXPECT_EQ(b.footer.position.y(), f.footer.position.y());
       const auto right_end = [](const Label& l) {
         return l.position.x() + 0.3 * l.size_mm * static_cast<double>(l.text.size());
