@@ -228,7 +228,9 @@ void straighten_crossings(const Mesh& part, const std::vector<int>& side, std::v
     for (int e = 0; e < edges; ++e) {
       if (t[e] < 0 || count[e] != 2) continue;
       const Mesh::Point p0 = point(next[e][0]), p1 = point(next[e][1]);
-      const auto [a, b] = ends(e);
+      // Named copies, not a structured binding: clang 14 cannot capture one in a lambda.
+      const std::array<Mesh::Point, 2> end = ends(e);
+      const Mesh::Point a = end[0], b = end[1];
       auto length = [&](double s) {
         const Mesh::Point p = (1.0 - s) * a + s * b;
         return (p - p0).norm() + (p - p1).norm();
