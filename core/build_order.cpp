@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <map>
 #include <queue>
 #include <string>
@@ -36,8 +37,14 @@ struct PieceGraph {
   std::vector<std::vector<LabelledSeam>> self_seams;
 };
 
+// Lengths (mm) and areas (mm²) to a thousandth: what differs by less is a tie, broken by
+// number, so rounding in the layout cannot reorder alike pieces.
+long long rounded(double value) {
+  return std::llround(value * 1000.0);
+}
+
 bool longer_first(const LabelledSeam& a, const LabelledSeam& b) {
-  if (a.length_mm != b.length_mm) return a.length_mm > b.length_mm;
+  if (rounded(a.length_mm) != rounded(b.length_mm)) return a.length_mm > b.length_mm;
   return a.label < b.label;
 }
 
@@ -142,7 +149,7 @@ std::vector<std::vector<int>> parts_by_area(const PieceGraph& graph) {
   }
   // Parts were found from their lowest piece up, so a tie keeps the lower numbers first.
   std::stable_sort(by_area.begin(), by_area.end(),
-                   [](const Part& a, const Part& b) { return a.area > b.area; });
+                   [](const Part& a, const Part& b) { return rounded(a.area) > rounded(b.area); });
   std::vector<std::vector<int>> sorted;
   for (Part& part : by_area) sorted.push_back(std::move(part.pieces));
   return sorted;
@@ -172,7 +179,8 @@ int first_piece(const PieceGraph& graph, const std::vector<int>& part, double la
   for (int p : part) {  // ascending: a full tie keeps the lower number
     if (graph.areas[p] < large_share * largest) continue;
     const long hops = hops_to_all(graph, p);
-    if (best < 0 || hops < best_hops || (hops == best_hops && graph.areas[p] > graph.areas[best])) {
+    if (best < 0 || hops < best_hops ||
+        (hops == best_hops && rounded(graph.areas[p]) > rounded(graph.areas[best]))) {
       best = p;
       best_hops = hops;
     }
@@ -191,7 +199,7 @@ BuildStep step_adding(const PieceGraph& graph, int piece, const std::vector<bool
   for (const Neighbour& next : graph.neighbours[piece])
     if (built[next.piece]) touching.push_back(&next);
   std::stable_sort(touching.begin(), touching.end(), [](const Neighbour* a, const Neighbour* b) {
-    return a->length_mm > b->length_mm;
+    return rounded(a->length_mm) > rounded(b->length_mm);
   });
   BuildStep step;
   step.piece = graph.names[piece];
@@ -222,7 +230,7 @@ std::vector<int> growth_order(const PieceGraph& graph, int first) {
     next = -1;
     double best = 0.0;
     for (const auto& [piece, length] : shared)  // ascending piece: ties keep the lower
-      if (next < 0 || length > best) {
+      if (next < 0 || rounded(length) > rounded(best)) {
         next = piece;
         best = length;
       }

@@ -1,12 +1,11 @@
 // export.files — writes the per-model outputs of DESIGN.md section 4 into <out>/<name>/:
-// report.json, approximation.obj, strips.json, error.ply, pattern.pdf, pattern-NN.svg.
-// Every file is written to a temporary name and renamed into place.
+// report.json, approximation.obj, strips.json, pieces.json, error.ply, pattern.pdf,
+// pattern-NN.svg. Every file is written to a temporary name and renamed into place.
 //
 //   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply], preset: print}}
 
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
-
 #include <time.h>
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "core/build_order.h"
 #include "core/printable_utf8.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
@@ -57,8 +57,9 @@ std::vector<std::shared_ptr<const Image>> material_images(ModelRun& model,
     if (material.texture.empty()) continue;
     try {
       images[m] = std::make_shared<const Image>(
-          material.texture_bytes ? decode_image(material.texture, *material.texture_bytes, max_pixels)
-                                 : load_image(material.texture, max_pixels));
+          material.texture_bytes
+              ? decode_image(material.texture, *material.texture_bytes, max_pixels)
+              : load_image(material.texture, max_pixels));
     } catch (const std::exception& e) {
       const std::string text = "texture of material '" + printable_utf8(material.name) +
                                "' not printed: " + printable_utf8(e.what());
@@ -191,7 +192,8 @@ void register_export_files(Registry& registry) {
               "colours and line styles: print, laser (cut red, score blue) or cutter");
   registry.add(
       {.name = "export.files",
-       .summary = "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
+       .summary =
+           "report.json, approximation.obj, strips.json, pieces.json, error.ply, PDF and SVG",
        .input = MessageType::of<Pattern>(),
        .params = table.specs(),
        .create = [](const Params& params, const NodeContext&) {
@@ -272,8 +274,9 @@ void register_export_files(Registry& registry) {
                  });
                }
              }
+             const BuildOrder order = build_order(layout);
              if (wants(formats, "json"))
-               write_file_atomic(dir / "pieces.json", pieces_json(layout));
+               write_file_atomic(dir / "pieces.json", pieces_json(layout, order));
              if (wants(formats, "svg")) {
                for (std::size_t page = 0; page < layout.pages.size(); ++page) {
                  const std::string number = std::to_string(page + 1);
@@ -284,7 +287,9 @@ void register_export_files(Registry& registry) {
                }
              }
              if (wants(formats, "pdf")) {
-               const std::vector<GuidePiece> guide = guide_pieces(layout, strips.flat);
+               Guide guide{guide_pieces(layout, strips.flat), {}};
+               for (const BuildStep& step : order.steps)
+                 guide.steps.push_back(build_step_text(step));
                write_via_temporary(dir / "pattern.pdf", [&](const std::filesystem::path& tmp) {
                  write_pattern_pdf(layout, tmp, page_style, &guide);
                });

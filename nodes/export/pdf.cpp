@@ -104,7 +104,7 @@ struct ContextDeleter {
 }  // namespace
 
 void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
-                       const StyleOptions& style, const std::vector<GuidePiece>* guide) {
+                       const StyleOptions& style, const Guide* guide) {
   const double width = layout.page.width_mm * kPointsPerMm;
   const double height = layout.page.height_mm * kPointsPerMm;
   std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
@@ -122,7 +122,10 @@ void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path&
     std::unique_ptr<cairo_t, ContextDeleter> cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
     if (guide && !layout.pages.empty()) {
-      draw_guide(cr.get(), *guide, layout.page, style.title, style.font_family);
+      draw_guide(cr.get(), *guide, layout.page, style.title, style.font_family, [&] {
+        cairo_show_page(cr.get());
+        return true;
+      });
       cairo_show_page(cr.get());
     }
     for (int page = 0; page < static_cast<int>(layout.pages.size()); ++page) {

@@ -161,6 +161,30 @@ TEST(BuildOrder, TiesGoToTheLowerNumberWhateverThePages) {
   EXPECT_EQ(texts(star(true)), texts(forward));
 }
 
+TEST(BuildOrder, LengthsAndAreasAlikeToAThousandthAreTies) {
+  // Rounding in the layout makes alike pieces differ in the last digits: the number decides.
+  HandLayout hand;
+  hand.piece("1", 30, 30);
+  hand.piece("2", 10, 10);
+  hand.piece("3", 10, 10 + 1e-7);
+  hand.piece("4", 10, 10);
+  hand.piece("5", 10 + 1e-7, 10);
+  hand.seam("1", "2", "A1", 10);
+  hand.seam("1", "3", "A2", 10 + 1e-6);
+  hand.seam("4", "5", "B1", 7);
+  const BuildOrder order = build_order(hand.layout());
+  EXPECT_EQ(pieces_in_order(order), (std::vector<std::string>{"1", "2", "3", "4", "5"}));
+  // ... but a real difference counts.
+  HandLayout longer;
+  longer.piece("1", 30, 30);
+  longer.piece("2", 10, 10);
+  longer.piece("3", 10, 10);
+  longer.seam("1", "2", "A1", 10);
+  longer.seam("1", "3", "A2", 10.01);
+  EXPECT_EQ(pieces_in_order(build_order(longer.layout())),
+            (std::vector<std::string>{"1", "3", "2"}));
+}
+
 TEST(BuildOrder, SeamsOfAPieceWithItselfAreGluedAtItsStepAndClosingSeamsLast) {
   HandLayout hand;
   hand.piece("1", 20, 20);
