@@ -1,6 +1,6 @@
-// End to end: the build order in pieces.json and on the assembly guide, as the default pipeline
-// writes them: every piece has one step, each step glues its piece to pieces built before it,
-// and one thread or two give the very same files.
+// End to end: the build order in pieces.json and assembly.html, as the default pipeline writes
+// them: every piece has one step, each step glues its piece to pieces built before it, and one
+// thread or two give the very same files.
 
 #include <gtest/gtest.h>
 
@@ -53,7 +53,7 @@ void expect_build_order(const nlohmann::json& pieces_file) {
   EXPECT_EQ(static_cast<int>(parts.size()), pieces_file.at("parts").get<int>());
 }
 
-TEST(Assembly, BuildOrderIsTheSameOnOneAndTwoThreads) {
+TEST(Assembly, BuildOrderAndViewerAreTheSameOnOneAndTwoThreads) {
   const TriangleMesh pawn = generate_shape("pawn", {});
   const auto one = run_pipeline(pawn, "2%", "pawn", 1);
   const auto two = run_pipeline(pawn, "2%", "pawn", 2);
@@ -62,6 +62,9 @@ TEST(Assembly, BuildOrderIsTheSameOnOneAndTwoThreads) {
   ASSERT_NE(one.dir, two.dir);
   const std::string pieces = read_text(one.dir / "pieces.json");
   EXPECT_EQ(pieces, read_text(two.dir / "pieces.json"));
+  const std::string html = read_text(one.dir / "assembly.html");
+  ASSERT_GT(html.size(), 100'000u);
+  EXPECT_TRUE(html == read_text(two.dir / "assembly.html"));
   expect_build_order(nlohmann::json::parse(pieces));
 }
 
