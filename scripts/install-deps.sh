@@ -4,7 +4,7 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config
           libtbb-dev libopenmesh-dev libeigen3-dev libspdlog-dev libyaml-cpp-dev libcli11-dev
           nlohmann-json3-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev
-          libjpeg-dev libtinygltf-dev lib3mf-dev
+          libjpeg-dev zlib1g-dev libtinygltf-dev lib3mf-dev
           python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
           poppler-utils libxml2-utils libcgal-demo parallel
           clang-14 libfuzzer-14-dev

@@ -12,6 +12,7 @@
 #include "core/printable_utf8.h"
 #include "nodes/export/assembly_template.h"
 #include "nodes/export/base64.h"
+#include "nodes/export/gzip.h"
 #include "nodes/export/piece_colour.h"
 #include "nodes/export/piece_points3d.h"
 #include "nodes/export/svg.h"
@@ -167,28 +168,10 @@ nlohmann::json steps_data(const BuildOrder& order) {
   return steps;
 }
 
-// JSON that is safe inside <script>: ASCII only (bytes that are not UTF-8 become U+FFFD), and
-// <, > and & escaped, so no "</script>" or "<!--" can appear in it.
-std::string script_json(const nlohmann::json& data) {
-  const std::string text = data.dump(-1, ' ', true, nlohmann::json::error_handler_t::replace);
-  std::string out;
-  out.reserve(text.size() + text.size() / 16);
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "\\u003c";
-        break;
-      case '>':
-        out += "\\u003e";
-        break;
-      case '&':
-        out += "\\u0026";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+// The data as the page carries it: its JSON (UTF-8; bytes that are not become U+FFFD),
+// gzip-compressed, in base64, which nothing in it can end the <script> it stands in.
+std::string page_data(const nlohmann::json& data) {
+  return base64(gzip(data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace)));
 }
 
 std::string filled_template(const std::string& title, const std::string& data) {
@@ -242,7 +225,7 @@ AssemblyHtml assembly_html(const PatternLayout& layout, const std::vector<FlatSt
   auto page_with = [&](const std::vector<std::string>& pages) {
     data["pages_svg"] = pages;
     data["notes"] = result.notes;
-    return filled_template(title, script_json(data));
+    return filled_template(title, page_data(data));
   };
   StyleOptions page_style = style;
   page_style.svg_decimals = options.svg_decimals;

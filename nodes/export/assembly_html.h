@@ -5,8 +5,9 @@
 // labels; hovering a seam label shows its partner; a step slider builds the model up in the
 // build order (core/build_order.h).
 //
-// The page holds the model's data as JSON in a <script type="application/json">, written
-// ASCII-only with <, > and & escaped (\u003c ...), so no name or label can end the element:
+// The page holds the model's data as JSON, gzip-compressed and in base64 (so that nothing in
+// it can end its element, and the pattern pages take a fifth of their size), in
+// <script id="papercraft-data" type="application/gzip">:
 //   name, version, page {width_mm, height_mm}, page_count, parts, notes [text],
 //   pages_svg [one SVG document per pattern page, or none],
 //   grid {origin [x, y, z], step}: the 3D points' grid, in mm on the model at print scale,

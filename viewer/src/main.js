@@ -1,7 +1,7 @@
 // assembly.html: the 3D model and the pattern pages side by side, one selection shared by both,
 // and the build order step by step. The page state is window.viewer (read by the browser tests).
 
-import { readModel } from './model.js';
+import { dataText, readModel } from './model.js';
 import { ModelView } from './scene.js';
 import { PageView } from './pages.js';
 
@@ -156,13 +156,15 @@ class Viewer {
   }
 }
 
-try {
-  const model = readModel($('papercraft-data').textContent);
+async function start() {
+  const model = readModel(await dataText($('papercraft-data').textContent));
   window.viewer = new Viewer(model);
-} catch (error) {
+}
+
+start().catch((error) => {
   const failure = document.createElement('p');
   failure.id = 'failure';
   failure.textContent = `This page could not show the model: ${error.message}`;
   document.body.prepend(failure);
-  throw error;
-}
+  console.error(error);
+});

@@ -12,6 +12,13 @@ function unpack(base64, bytes) {
   return values;
 }
 
+// The page's data: gzip-compressed JSON in base64, opened by the browser's own gunzip.
+export async function dataText(base64) {
+  const bytes = Uint8Array.from(atob(base64.trim()), (c) => c.charCodeAt(0));
+  const stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream('gzip'));
+  return new Response(stream).text();
+}
+
 export function readModel(text) {
   const data = JSON.parse(text);
   const { origin, step } = data.grid;
