@@ -175,10 +175,14 @@ bool folds_flat_onto(const FlatStrip& a, const FlatStrip& b, double relative) {
 }
 
 double flat_area(const FlatStrip& strip) {
+  return flat_area(strip.vertices2d, strip.triangles);
+}
+
+double flat_area(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles) {
   double area = 0.0;
-  for (const Triangle& t : strip.triangles) {
-    const Vec2 u = strip.vertices2d[t[1]] - strip.vertices2d[t[0]];
-    const Vec2 v = strip.vertices2d[t[2]] - strip.vertices2d[t[0]];
+  for (const Triangle& t : triangles) {
+    const Vec2 u = points[t[1]] - points[t[0]];
+    const Vec2 v = points[t[2]] - points[t[0]];
     area += 0.5 * std::abs(u.x() * v.y() - u.y() * v.x());
   }
   return area;

@@ -34,6 +34,9 @@ bool weld_keeps_lengths(const std::vector<Vec3>& points3d, const std::vector<Tri
 /// The area of a flat strip's triangles in the plane (each counted by its absolute value).
 double flat_area(const FlatStrip& strip);
 
+/// The area of `triangles` over the plane `points` (each counted by its absolute value).
+double flat_area(const std::vector<Vec2>& points, const std::vector<Triangle>& triangles);
+
 /// Round each vertex inside a seam chain that `a` shares with `b` (a vertex of a on two of its
 /// seam edges whose neighbour is b's id, and of b on two of its seam edges to a; matched by
 /// their exact 3D points, and where a strip holds the point twice, its copy with the least

@@ -7,4 +7,4 @@ scripts/install-deps.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target papercraft
 build/runner/papercraft run examples/pawn.obj --tolerance 2% --height 150 --out out "$@"
-echo "pattern: out/pawn/pattern.pdf (and pattern-NN.svg, report.json, approximation.obj)"
+echo "pattern: out/pawn/pattern.pdf; viewer: out/pawn/assembly.html (and pattern-NN.svg, report.json, ...)"

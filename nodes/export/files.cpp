@@ -1,7 +1,7 @@
 #include "nodes/export/files.h"
 
 #include <algorithm>
-#include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -114,20 +114,33 @@ nlohmann::json transform_json(const PageTransform& t) {
 
 }  // namespace
 
-std::string pieces_json(const PatternLayout& layout) {
+std::string pieces_json(const PatternLayout& layout, const BuildOrder& order) {
   nlohmann::json pieces = nlohmann::json::array();
   for (std::size_t page = 0; page < layout.pages.size(); ++page) {
     for (const PlacedPiece& piece : layout.pages[page].pieces) {
       nlohmann::json seams = nlohmann::json::array();
       for (const PieceSeam& seam : piece.seams)
         seams.push_back({{"label", seam.label}, {"partner", seam.partner}, {"tab", seam.tab}});
-      pieces.push_back({{"name", piece.name},
-                        {"strip", piece.strip_id},
-                        {"piece_index", piece.piece_index},
-                        {"piece_count", piece.piece_count},
-                        {"page", page + 1},
-                        {"transform", transform_json(piece.transform)},
-                        {"seams", std::move(seams)}});
+      nlohmann::json entry = {{"name", piece.name},
+                              {"strip", piece.strip_id},
+                              {"piece_index", piece.piece_index},
+                              {"piece_count", piece.piece_count},
+                              {"page", page + 1},
+                              {"transform", transform_json(piece.transform)},
+                              {"seams", std::move(seams)}};
+      if (const BuildStep* step = order.step_of(piece.name)) {
+        nlohmann::json glue = nlohmann::json::array();
+        for (const GlueSeam& seam : step->seams)
+          glue.push_back({{"label", seam.label},
+                          {"partner", seam.partner},
+                          {"length_mm", std::round(seam.length_mm * 100.0) / 100.0},
+                          {"closes_loop", seam.closes_loop}});
+        entry["step"] = step->step;
+        entry["part"] = step->part;
+        entry["glue_to"] = step->attach_to;
+        entry["glue"] = std::move(glue);
+      }
+      pieces.push_back(std::move(entry));
     }
   }
   nlohmann::json joints = nlohmann::json::array();
@@ -140,18 +153,15 @@ std::string pieces_json(const PatternLayout& layout) {
     }
   }
   // In number order (1, 2, ..., 12a, 12b, ...), whatever page each lies on.
-  auto key = [](const nlohmann::json& piece) {
-    const std::string name = piece.at("name").get<std::string>();
-    std::size_t digits = 0;
-    while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[digits]))) ++digits;
-    return std::make_pair(digits ? std::stol(name.substr(0, digits)) : 0L, name.substr(digits));
-  };
-  std::stable_sort(pieces.begin(), pieces.end(),
-                   [&](const auto& a, const auto& b) { return key(a) < key(b); });
+  std::stable_sort(pieces.begin(), pieces.end(), [](const auto& a, const auto& b) {
+    return piece_name_less(a.at("name").template get<std::string>(),
+                           b.at("name").template get<std::string>());
+  });
   nlohmann::json root = {
       {"mm_per_unit", layout.mm_per_unit},
       {"page", {{"width_mm", layout.page.width_mm}, {"height_mm", layout.page.height_mm}}},
       {"pages", layout.pages.size()},
+      {"parts", order.parts},
       {"pieces", std::move(pieces)},
       {"joints", std::move(joints)}};
   return root.dump(1) + "\n";

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/build_order.h"
 #include "core/mesh.h"
 #include "core/pattern.h"
 #include "core/strip.h"
@@ -22,8 +23,10 @@ std::string strips_json(const std::vector<FlatStrip>& strips);
 /// pieces.json: every printed piece, in number order: its name, strip id, piece index and
 /// count (a strip split for the page), page (1-based), page transform (strip vertices2d in
 /// model units -> page mm: `linear` row-major 2x2, `translation`, `rotation_degrees`), and
-/// its seams (printed label, the piece across, whether this side carries the tab).
-std::string pieces_json(const PatternLayout& layout);
+/// its seams (printed label, the piece across, whether this side carries the tab), and its
+/// place in `order`: `step`, `part`, `glue_to` (the built piece it is glued to first) and
+/// `glue` (the seams glued at its step: label, partner, length_mm, closes_loop).
+std::string pieces_json(const PatternLayout& layout, const BuildOrder& order);
 
 /// Unsigned distance of every vertex of `mesh` to the surface `to` (BVH, exact).
 std::vector<double> vertex_distances(const Mesh& mesh, const TriangleMesh& to);

@@ -1,8 +1,9 @@
 // export.files — writes the per-model outputs of DESIGN.md section 4 into <out>/<name>/:
-// report.json, approximation.obj, strips.json, error.ply, pattern.pdf, pattern-NN.svg.
-// Every file is written to a temporary name and renamed into place.
+// report.json, approximation.obj, strips.json, pieces.json, error.ply, pattern.pdf,
+// pattern-NN.svg, assembly.html. Every file is written to a temporary name and renamed into
+// place.
 //
-//   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply], preset: print}}
+//   export: {impl: export.files, params: {formats: [pdf, svg, obj, json, ply, html]}}
 
 #include <spdlog/spdlog.h>
 #include <tbb/parallel_for.h>
@@ -15,11 +16,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "core/build_order.h"
 #include "core/printable_utf8.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
 #include "graph/param_table.h"
 #include "graph/registry.h"
+#include "nodes/export/assembly_html.h"
 #include "nodes/export/bake.h"
 #include "nodes/export/files.h"
 #include "nodes/export/image.h"
@@ -39,10 +42,11 @@ double thread_cpu_seconds() {
 }
 
 struct ExportOptions {
-  std::vector<std::string> formats = {"pdf", "svg", "obj", "json", "ply"};
+  std::vector<std::string> formats = {"pdf", "svg", "obj", "json", "ply", "html"};
   StyleOptions style;
   BakeOptions bake;
   long max_texture_pixels = 64'000'000;
+  double html_max_mb = 5.0;
 };
 
 // The texture image of every material, read once; a missing or unreadable one (or one too
@@ -200,7 +204,8 @@ void register_export_files(Registry& registry) {
   static const auto table =
       ParamTable<O>()
           .add("formats", [](O & o) -> auto& { return o.formats; },
-               "which files to write besides report.json", {}, {"pdf", "svg", "obj", "json", "ply"})
+               "which files to write besides report.json", {},
+               {"pdf", "svg", "obj", "json", "ply", "html"})
           .add(
               "texture_dpi", [](O & o) -> auto& { return o.bake.dpi; },
               "resolution of the pieces' print images baked from the input's textures or colours",
@@ -214,6 +219,10 @@ void register_export_files(Registry& registry) {
           .add(
               "max_texture_pixels", [](O & o) -> auto& { return o.max_texture_pixels; },
               "a texture image with more pixels is refused, not read", at_least(1))
+          .add(
+              "html_max_mb", [](O & o) -> auto& { return o.html_max_mb; },
+              "assembly.html stays under this size (MB): print images, then pages, are left out",
+              greater_than(0))
           .choice(
               "preset", [](O & o) -> auto& { return o.style.preset; },
               std::vector<std::pair<std::string, StylePreset>>{{"print", StylePreset::Print},
@@ -222,7 +231,8 @@ void register_export_files(Registry& registry) {
               "colours and line styles: print, laser (cut red, score blue) or cutter");
   registry.add(
       {.name = "export.files",
-       .summary = "report.json, approximation.obj, strips.json, error.ply, PDF and SVG",
+       .summary = "report.json, approximation.obj, strips.json, pieces.json, error.ply, PDF, SVG "
+                  "and assembly.html",
        .input = MessageType::of<Pattern>(),
        .params = table.specs(),
        .create = [](const Params& params, const NodeContext&) {
@@ -231,7 +241,10 @@ void register_export_files(Registry& registry) {
          const StyleOptions& style = options.style;
          const BakeOptions bake = options.bake;
          const long max_texture_pixels = options.max_texture_pixels;
-         return make_body([formats, style, bake, max_texture_pixels](const Envelope& in, Emitter&) {
+         AssemblyHtmlOptions html;
+         html.max_bytes = static_cast<std::size_t>(options.html_max_mb * 1e6);
+         return make_body([formats, style, bake, max_texture_pixels, html](const Envelope& in,
+                                                                           Emitter&) {
            const Pattern& pattern = in.get<Pattern>();
            const ModelStrips& strips = *pattern.strips;
            ModelRun& model = *in.model;
@@ -265,7 +278,7 @@ void register_export_files(Registry& registry) {
              // The print images, baked from the input surface when it has textures or colours.
              std::vector<std::vector<BakedImage>> images;
              if (strips.model && strips.model->appearance && !strips.model->appearance->empty() &&
-                 (wants(formats, "pdf") || wants(formats, "svg"))) {
+                 (wants(formats, "pdf") || wants(formats, "svg") || wants(formats, "html"))) {
                const auto start = std::chrono::steady_clock::now();
                const double sampler_cpu_start = thread_cpu_seconds();
                const SurfaceSampler sampler(
@@ -301,7 +314,8 @@ void register_export_files(Registry& registry) {
                  });
                }
              }
-             if (wants(formats, "json")) model.write_file("pieces.json", pieces_json(layout));
+             const BuildOrder order = build_order(layout);
+             if (wants(formats, "json")) model.write_file("pieces.json", pieces_json(layout, order));
              if (wants(formats, "svg")) {
                for (std::size_t page = 0; page < layout.pages.size(); ++page) {
                  const std::string number = std::to_string(page + 1);
@@ -312,12 +326,20 @@ void register_export_files(Registry& registry) {
                }
              }
              if (wants(formats, "pdf")) {
-               const std::vector<GuidePiece> guide = guide_pieces(layout, strips.flat);
+               Guide guide{guide_pieces(layout, strips.flat), {}};
+               for (const BuildStep& step : order.steps)
+                 guide.steps.push_back(build_step_text(step));
                model.write_file("pattern.pdf", [&](std::ostream& out) {
                  write_pattern_pdf(layout, out, page_style, &guide);
                });
                if (!layout.pages.empty())
                  model.write_file("guide.png", guide_png(guide, layout.page, model.name));
+             }
+             if (wants(formats, "html")) {
+               const AssemblyHtml page =
+                   assembly_html(layout, strips.flat, order, page_style, html);
+               for (const std::string& note : page.notes) model.note("assembly.html: " + note);
+               model.write_file("assembly.html", page.text);
              }
            }
            model.write_file("report.json", model_report(model).dump(2) + "\n");

@@ -10,36 +10,11 @@
 
 #include "core/errors.h"
 #include "nodes/export/image.h"
+#include "nodes/export/piece_colour.h"
+#include "nodes/export/piece_points3d.h"
 
 namespace papercraft {
 namespace {
-
-struct Colour {
-  double r, g, b;
-};
-
-// Well-separated hues (golden-ratio steps), light enough for black numbers.
-Colour piece_colour(int index) {
-  const double hue = std::fmod(index * 0.618033988749895, 1.0) * 6.0;
-  const double s = 0.45, v = 0.95;
-  const int sector = static_cast<int>(hue) % 6;
-  const double f = hue - std::floor(hue);
-  const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
-  switch (sector) {
-    case 0:
-      return {v, t, p};
-    case 1:
-      return {q, v, p};
-    case 2:
-      return {p, v, t};
-    case 3:
-      return {p, q, v};
-    case 4:
-      return {t, p, v};
-    default:
-      return {v, p, q};
-  }
-}
 
 struct View {
   std::string name;
@@ -110,7 +85,7 @@ void draw_view(cairo_t* cr, const std::vector<GuidePiece>& pieces, const View& v
   const int ny = std::max(1, static_cast<int>(size.y() / kCell));
   std::vector<int> seen(std::size_t(nx) * ny, -1);
   for (const Face& face : faces) {
-    const Colour c = piece_colour(face.piece);
+    const Rgb c = piece_colour(face.piece);
     const Vec2 a = to_page(face.points[0]), b = to_page(face.points[1]),
                d = to_page(face.points[2]);
     cairo_new_path(cr);
@@ -180,15 +155,9 @@ std::vector<GuidePiece> guide_pieces(const PatternLayout& layout,
       GuidePiece piece;
       piece.name = placed.name;
       piece.page = static_cast<int>(page) + 1;
-      for (const Triangle& t : placed.triangles) {
-        std::array<Vec3, 3> corners;
-        // points3d: every vertex's point (where a layout added points, no strip vertex has it).
-        const bool own = placed.points3d.size() == placed.vertices.size();
-        for (int k = 0; k < 3; ++k)
-          corners[k] =
-              own ? placed.points3d[t[k]] : it->second->vertices3d[placed.strip_vertex[t[k]]];
-        piece.triangles.push_back(corners);
-      }
+      const std::vector<Vec3> points = piece_points3d(placed, *it->second);
+      for (const Triangle& t : placed.triangles)
+        piece.triangles.push_back({points[t[0]], points[t[1]], points[t[2]]});
       pieces.push_back(std::move(piece));
     }
   }
@@ -199,22 +168,18 @@ std::vector<GuidePiece> guide_pieces(const PatternLayout& layout,
   return pieces;
 }
 
-void draw_guide(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSize& page,
-                const std::string& title, const std::string& font) {
-  constexpr double kMargin = 10.0;
-  cairo_save(cr);
-  cairo_select_font_face(cr, font.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_set_font_size(cr, 5.0);
-  cairo_move_to(cr, kMargin, kMargin + 5);
-  const std::string heading = (title.empty() ? std::string("model") : title) + ": assembly guide";
-  cairo_show_text(cr, heading.c_str());
-  // Four views in a 2 x 2 grid over the top two thirds, the table below.
-  const double width = page.width_mm - 2 * kMargin;
-  const double views_height = (page.height_mm - 2 * kMargin - 10) * 0.66;
-  const Vec2 cell(0.5 * width, 0.5 * views_height);
-  // Front and back along the model's thinnest side (its largest outline), a side view along
-  // another axis, and a three-quarter view; z is up unless z is the thinnest side (then y).
+namespace {
+
+constexpr double kMargin = 10.0;
+constexpr double kStepTextMm = 2.6;
+constexpr double kLineSpacing = 1.4;
+
+// Front and back along the model's thinnest side (its largest outline), a side view along
+// another axis, and a three-quarter view, in a 2 x 2 grid of `height` below `top`; z is up
+// unless z is the thinnest side (then y).
+void draw_views(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSize& page,
+                double top, double height) {
+  const Vec2 cell(0.5 * (page.width_mm - 2 * kMargin), 0.5 * height);
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const GuidePiece& piece : pieces)
     for (const auto& t : piece.triangles)
@@ -231,20 +196,21 @@ void draw_guide(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSi
                                    {"three-quarter", toward + across + 0.7 * up, up}};
   const double number_size = pieces.size() > 60 ? 2.0 : 3.0;
   for (int k = 0; k < 4; ++k) {
-    const Vec2 corner(kMargin + (k % 2) * cell.x(), kMargin + 10 + (k / 2) * cell.y());
+    const Vec2 corner(kMargin + (k % 2) * cell.x(), top + (k / 2) * cell.y());
     draw_view(cr, pieces, views[k], corner, cell, number_size);
   }
-  // Which pieces each page holds.
-  cairo_set_source_rgb(cr, 0, 0, 0);
+}
+
+// Which pieces each page holds, from baseline `y` on, the text shrunk (not below 2 mm) to end
+// above `bottom`. Returns the baseline after the table.
+double draw_page_table(cairo_t* cr, const std::vector<GuidePiece>& pieces, double y, double width,
+                       double bottom) {
   std::map<int, std::vector<std::string>> on_page;
   for (const GuidePiece& piece : pieces) on_page[piece.page].push_back(piece.name);
-  double y = kMargin + 10 + views_height + 6;
-  const double bottom = page.height_mm - kMargin;
   double text = 3.0;
   std::size_t characters = 0;
   for (const auto& [p, names] : on_page)
     for (const auto& name : names) characters += name.size() + 2;
-  // Shrink the table's text (not below 2 mm) until it fits.
   while (text > 2.0 && 0.6 * text * static_cast<double>(characters) / width * 1.4 * text +
                                1.4 * text * static_cast<double>(on_page.size()) >
                            bottom - y)
@@ -255,7 +221,7 @@ void draw_guide(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSi
     for (const std::string& name : names) {
       const std::string more = line + " " + name;
       if (0.6 * text * static_cast<double>(more.size()) > width) {
-        if (y > bottom) break;
+        if (y > bottom) return y;
         cairo_move_to(cr, kMargin, y);
         cairo_show_text(cr, line.c_str());
         y += 1.4 * text;
@@ -264,16 +230,148 @@ void draw_guide(cairo_t* cr, const std::vector<GuidePiece>& pieces, const PageSi
         line = more;
       }
     }
-    if (y > bottom) break;
+    if (y > bottom) return y;
     cairo_move_to(cr, kMargin, y);
     cairo_show_text(cr, line.c_str());
     y += 1.4 * text;
   }
+  return y;
+}
+
+double text_width(cairo_t* cr, const std::string& text) {
+  cairo_text_extents_t extents;
+  cairo_text_extents(cr, text.c_str(), &extents);
+  return extents.x_advance;
+}
+
+// A step's line broken at spaces into lines no wider than `width` (mm, at the current font
+// size); the lines after the first are to be indented by `indent`, under the text after "N: ".
+struct WrappedStep {
+  std::vector<std::string> lines;
+  double indent = 0.0;
+};
+
+WrappedStep wrap_step(cairo_t* cr, const std::string& text, double width) {
+  WrappedStep wrapped;
+  const std::size_t colon = text.find(": ");
+  wrapped.indent = colon == std::string::npos ? 0.0 : text_width(cr, text.substr(0, colon + 2));
+  std::string line;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find(' ', start + 1);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);  // with its leading space
+    const double room = wrapped.lines.empty() ? width : width - wrapped.indent;
+    if (!line.empty() && text_width(cr, line + word) > room) {
+      wrapped.lines.push_back(line);
+      line = word[0] == ' ' ? word.substr(1) : word;
+    } else {
+      line += word;
+    }
+    start = end;
+  }
+  if (!line.empty()) wrapped.lines.push_back(line);
+  return wrapped;
+}
+
+// Whether steps of these wrapped lines fill at most `columns` columns of `rows` lines, a step
+// never split between columns.
+bool steps_fit(const std::vector<WrappedStep>& steps, int rows, int columns) {
+  int column = 0, used = 0;
+  for (const WrappedStep& step : steps) {
+    const int lines = static_cast<int>(step.lines.size());
+    if (used > 0 && used + lines > rows) {
+      ++column;
+      used = 0;
+    }
+    used += lines;
+  }
+  return column < columns;
+}
+
+// The build steps in columns from `top` down, on as many pages as they need: as few columns
+// as hold them all on this page (wider columns wrap less), else the most the page takes.
+void draw_build_steps(cairo_t* cr, const std::vector<std::string>& steps, const PageSize& page,
+                      double top, const std::function<bool()>& next_page) {
+  const double width = page.width_mm - 2 * kMargin;
+  const int most_columns = width >= 150 ? 3 : width >= 90 ? 2 : 1;
+  constexpr double kGap = 5.0;
+  const double line = kLineSpacing * kStepTextMm;
+  const double bottom = page.height_mm - kMargin;
+  auto heading = [&](double y, const std::string& text) {
+    cairo_set_font_size(cr, 3.5);
+    cairo_move_to(cr, kMargin, y + 3.5);
+    cairo_show_text(cr, text.c_str());
+    cairo_set_font_size(cr, kStepTextMm);
+    return y + 3.5 + 1.5 * line;
+  };
+  if (top + 6 * line > bottom) {
+    if (!next_page()) return;
+    top = kMargin;
+  }
+  double column_top =
+      heading(top, "Build order (seams after \"then\" or \"close\" close a loop: glue them last)");
+  const int rows = static_cast<int>(std::floor((bottom - column_top) / line)) + 1;
+  int columns = 1;
+  double column_width = width;
+  std::vector<WrappedStep> wrapped;
+  for (; columns <= most_columns; ++columns) {
+    column_width = (width - kGap * (columns - 1)) / columns;
+    wrapped.clear();
+    for (const std::string& step : steps) wrapped.push_back(wrap_step(cr, step, column_width));
+    if (steps_fit(wrapped, rows, columns) || columns == most_columns) break;
+  }
+  double y = column_top;
+  int column = 0;
+  for (std::size_t i = 0; i < wrapped.size(); ++i) {
+    const std::vector<std::string>& lines = wrapped[i].lines;
+    if (y + line * static_cast<double>(lines.size() - 1) > bottom) {
+      if (++column == columns) {
+        if (!next_page()) {
+          cairo_move_to(cr, kMargin, bottom + line);
+          const std::string more = "steps " + std::to_string(i + 1) + " to " +
+                                   std::to_string(steps.size()) + ": next page of pattern.pdf";
+          cairo_show_text(cr, more.c_str());
+          return;
+        }
+        column = 0;
+        column_top = heading(kMargin, "Build order, continued");
+      }
+      y = column_top;
+    }
+    const double x = kMargin + column * (column_width + kGap);
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      cairo_move_to(cr, x + (k == 0 ? 0.0 : wrapped[i].indent), y);
+      cairo_show_text(cr, lines[k].c_str());
+      y += line;
+    }
+  }
+}
+
+}  // namespace
+
+void draw_guide(cairo_t* cr, const Guide& guide, const PageSize& page, const std::string& title,
+                const std::string& font, const std::function<bool()>& next_page) {
+  cairo_save(cr);
+  cairo_select_font_face(cr, font.c_str(), CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_set_font_size(cr, 5.0);
+  cairo_move_to(cr, kMargin, kMargin + 5);
+  const std::string heading = (title.empty() ? std::string("model") : title) + ": assembly guide";
+  cairo_show_text(cr, heading.c_str());
+  // The views over the top 62%, then the table of pages and the build steps.
+  const double views_height = (page.height_mm - 2 * kMargin - 10) * 0.62;
+  draw_views(cr, guide.pieces, page, kMargin + 10, views_height);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  const double bottom = page.height_mm - kMargin;
+  const double after_table = draw_page_table(cr, guide.pieces, kMargin + 10 + views_height + 6,
+                                             page.width_mm - 2 * kMargin, bottom);
+  if (!guide.steps.empty()) draw_build_steps(cr, guide.steps, page, after_table, next_page);
   cairo_restore(cr);
 }
 
-std::string guide_png(const std::vector<GuidePiece>& pieces, const PageSize& page,
-                      const std::string& title, double dpi) {
+std::string guide_png(const Guide& guide, const PageSize& page, const std::string& title,
+                      double dpi) {
   const double pixels_per_mm = dpi / 25.4;
   const int w = static_cast<int>(std::ceil(page.width_mm * pixels_per_mm));
   const int h = static_cast<int>(std::ceil(page.height_mm * pixels_per_mm));
@@ -282,7 +380,7 @@ std::string guide_png(const std::vector<GuidePiece>& pieces, const PageSize& pag
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
   cairo_scale(cr, pixels_per_mm, pixels_per_mm);
-  draw_guide(cr, pieces, page, title, "sans-serif");
+  draw_guide(cr, guide, page, title, "sans-serif", [] { return false; });
   cairo_destroy(cr);
   std::string bytes = png_bytes(surface);
   cairo_surface_destroy(surface);

@@ -46,6 +46,8 @@ struct StyleOptions {
   /// Per page, the pieces' baked print images (bake.h), drawn under everything else; the
   /// tabs then go unfilled. Null: none.
   const std::vector<std::vector<BakedImage>>* images = nullptr;
+  /// Digits after the point of the SVG pages' coordinates (3: a micrometre).
+  int svg_decimals = 3;
 };
 
 /// A line style; widths and dashes in mm.

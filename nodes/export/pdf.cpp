@@ -112,7 +112,7 @@ struct ContextDeleter {
 }  // namespace
 
 void write_pattern_pdf(const PatternLayout& layout, std::ostream& out, const StyleOptions& style,
-                       const std::vector<GuidePiece>* guide, const std::string& what) {
+                       const Guide* guide, const std::string& what) {
   const double width = layout.page.width_mm * kPointsPerMm;
   const double height = layout.page.height_mm * kPointsPerMm;
   std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
@@ -129,7 +129,10 @@ void write_pattern_pdf(const PatternLayout& layout, std::ostream& out, const Sty
     std::unique_ptr<cairo_t, ContextDeleter> cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), kPointsPerMm, kPointsPerMm);
     if (guide && !layout.pages.empty()) {
-      draw_guide(cr.get(), *guide, layout.page, style.title, style.font_family);
+      draw_guide(cr.get(), *guide, layout.page, style.title, style.font_family, [&] {
+        cairo_show_page(cr.get());
+        return true;
+      });
       cairo_show_page(cr.get());
     }
     for (int page = 0; page < static_cast<int>(layout.pages.size()); ++page) {
@@ -150,7 +153,7 @@ void write_pattern_pdf(const PatternLayout& layout, std::ostream& out, const Sty
 }
 
 void write_pattern_pdf(const PatternLayout& layout, const std::filesystem::path& path,
-                       const StyleOptions& style, const std::vector<GuidePiece>* guide) {
+                       const StyleOptions& style, const Guide* guide) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw IOException("cannot write PDF '" + path.string() + "': cannot open the file");
   write_pattern_pdf(layout, out, style, guide, path.string());

@@ -7,21 +7,92 @@
 #include <iterator>
 #include <sstream>
 
+#include "nodes/export/base64.h"
+
 namespace papercraft {
 namespace {
 
-// Millimetres to 3 decimals (a micrometre), without trailing zeros.
-std::string number(double value) {
-  if (std::abs(value) < 5e-4) return "0";
+// Millimetres to `decimals` decimals (3: a micrometre), without trailing zeros.
+std::string number(double value, int decimals = 3) {
+  if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) return "0";
   char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f", value);
+  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
   std::string text = buffer;
   while (text.back() == '0') text.pop_back();
   if (text.back() == '.') text.pop_back();
   return text;
 }
 
-std::string escape(const std::string& text) {
+std::string path_data(const DrawPath& path, int decimals) {
+  std::string d;
+  for (const auto& line : path.polylines) {
+    if (line.empty()) continue;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+      if (!d.empty()) d += ' ';
+      d += i == 0 ? 'M' : 'L';
+      d += number(line[i].x(), decimals);
+      d += ',';
+      d += number(line[i].y(), decimals);
+    }
+    if (path.closed) d += " Z";
+  }
+  return d;
+}
+
+void write_path(std::ostringstream& out, const DrawPath& path, int decimals) {
+  const std::string d = path_data(path, decimals);
+  if (d.empty()) return;
+  out << "    <path d=\"" << d << "\" fill=\"" << (path.fill.empty() ? "none" : path.fill) << "\"";
+  if (path.stroked) {
+    out << " stroke=\"" << path.pen.colour << "\" stroke-width=\"" << number(path.pen.width_mm)
+        << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
+    if (!path.pen.dash_mm.empty()) {
+      out << " stroke-dasharray=\"";
+      for (std::size_t i = 0; i < path.pen.dash_mm.size(); ++i)
+        out << (i ? "," : "") << number(path.pen.dash_mm[i]);
+      out << "\"";
+    }
+  } else {
+    out << " stroke=\"none\"";
+  }
+  out << "/>\n";
+}
+
+void write_text(std::ostringstream& out, const DrawText& text, const std::string& font,
+                int decimals) {
+  const Label& l = text.label;
+  if (l.text.empty()) return;
+  const std::string x = number(l.position.x(), decimals), y = number(l.position.y(), decimals);
+  out << "    <text x=\"" << x << "\" y=\"" << y << "\" font-family=\"" << xml_escaped(font)
+      << "\" font-size=\"" << number(l.size_mm) << "\" fill=\"" << text.colour
+      << "\" text-anchor=\"middle\" dominant-baseline=\"central\"";
+  if (std::abs(l.angle_degrees) > 1e-9)
+    out << " transform=\"rotate(" << number(l.angle_degrees) << " " << x << " " << y << ")\"";
+  out << ">" << xml_escaped(l.text) << "</text>\n";
+}
+
+// A PNG file's bytes and pixel size (from its IHDR chunk); empty when unreadable or not a PNG.
+struct Png {
+  std::string bytes;
+  int width = 0;
+  int height = 0;
+};
+
+// The pieces' baked print images, as embedded PNGs at their place on the page.
+void write_images(std::ostringstream& out, const std::vector<BakedImage>& images) {
+  for (const BakedImage& image : images) {
+    if (image.width <= 0 || image.height <= 0) continue;
+    out << "    <image x=\"" << number(image.origin.x()) << "\" y=\"" << number(image.origin.y())
+        << "\" width=\"" << number(image.width * image.pixel_mm) << "\" height=\""
+        << number(image.height * image.pixel_mm)
+        << "\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,"
+        << base64(png_bytes(image)) << "\"/>\n";
+  }
+}
+
+}  // namespace
+
+std::string xml_escaped(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
@@ -48,89 +119,6 @@ std::string escape(const std::string& text) {
   return out;
 }
 
-std::string path_data(const DrawPath& path) {
-  std::string d;
-  for (const auto& line : path.polylines) {
-    if (line.empty()) continue;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-      if (!d.empty()) d += ' ';
-      d += i == 0 ? 'M' : 'L';
-      d += number(line[i].x());
-      d += ',';
-      d += number(line[i].y());
-    }
-    if (path.closed) d += " Z";
-  }
-  return d;
-}
-
-void write_path(std::ostringstream& out, const DrawPath& path) {
-  const std::string d = path_data(path);
-  if (d.empty()) return;
-  out << "    <path d=\"" << d << "\" fill=\"" << (path.fill.empty() ? "none" : path.fill) << "\"";
-  if (path.stroked) {
-    out << " stroke=\"" << path.pen.colour << "\" stroke-width=\"" << number(path.pen.width_mm)
-        << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
-    if (!path.pen.dash_mm.empty()) {
-      out << " stroke-dasharray=\"";
-      for (std::size_t i = 0; i < path.pen.dash_mm.size(); ++i)
-        out << (i ? "," : "") << number(path.pen.dash_mm[i]);
-      out << "\"";
-    }
-  } else {
-    out << " stroke=\"none\"";
-  }
-  out << "/>\n";
-}
-
-void write_text(std::ostringstream& out, const DrawText& text, const std::string& font) {
-  const Label& l = text.label;
-  if (l.text.empty()) return;
-  const std::string x = number(l.position.x()), y = number(l.position.y());
-  out << "    <text x=\"" << x << "\" y=\"" << y << "\" font-family=\"" << escape(font)
-      << "\" font-size=\"" << number(l.size_mm) << "\" fill=\"" << text.colour
-      << "\" text-anchor=\"middle\" dominant-baseline=\"central\"";
-  if (std::abs(l.angle_degrees) > 1e-9)
-    out << " transform=\"rotate(" << number(l.angle_degrees) << " " << x << " " << y << ")\"";
-  out << ">" << escape(l.text) << "</text>\n";
-}
-
-std::string base64(const std::string& bytes) {
-  static const char* const digits =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    unsigned value = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      value = (value << 8) | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k) out += k <= n ? digits[(value >> (18 - 6 * k)) & 63] : '=';
-  }
-  return out;
-}
-
-// A PNG file's bytes and pixel size (from its IHDR chunk); empty when unreadable or not a PNG.
-struct Png {
-  std::string bytes;
-  int width = 0;
-  int height = 0;
-};
-
-// The pieces' baked print images, as embedded PNGs at their place on the page.
-void write_images(std::ostringstream& out, const std::vector<BakedImage>& images) {
-  for (const BakedImage& image : images) {
-    if (image.width <= 0 || image.height <= 0) continue;
-    out << "    <image x=\"" << number(image.origin.x()) << "\" y=\"" << number(image.origin.y())
-        << "\" width=\"" << number(image.width * image.pixel_mm) << "\" height=\""
-        << number(image.height * image.pixel_mm)
-        << "\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,"
-        << base64(png_bytes(image)) << "\"/>\n";
-  }
-}
-
-}  // namespace
-
 std::string pattern_page_svg(const PatternLayout& layout, int page_index,
                              const StyleOptions& style) {
   const std::vector<DrawLayer> layers = pattern_page_drawing(layout, page_index, style);
@@ -142,7 +130,7 @@ std::string pattern_page_svg(const PatternLayout& layout, int page_index,
       << "     xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\"\n"
       << "     version=\"1.1\" width=\"" << width << "mm\" height=\"" << height
       << "mm\" viewBox=\"0 0 " << width << " " << height << "\">\n"
-      << "  <title>" << escape(style.title.empty() ? "papercraft pattern" : style.title)
+      << "  <title>" << xml_escaped(style.title.empty() ? "papercraft pattern" : style.title)
       << ", page " << page_index + 1 << " of " << layout.pages.size() << "</title>\n";
   for (const DrawLayer& layer : layers) {
     out << "  <g inkscape:groupmode=\"layer\" id=\"" << layer.id << "\" inkscape:label=\""
@@ -150,8 +138,9 @@ std::string pattern_page_svg(const PatternLayout& layout, int page_index,
     if (&layer == &layers.front() && style.images &&
         static_cast<std::size_t>(page_index) < style.images->size())
       write_images(out, (*style.images)[static_cast<std::size_t>(page_index)]);
-    for (const DrawPath& path : layer.paths) write_path(out, path);
-    for (const DrawText& text : layer.texts) write_text(out, text, style.font_family);
+    for (const DrawPath& path : layer.paths) write_path(out, path, style.svg_decimals);
+    for (const DrawText& text : layer.texts)
+      write_text(out, text, style.font_family, style.svg_decimals);
     out << "  </g>\n";
   }
   out << "</svg>\n";

@@ -11,6 +11,10 @@
 
 namespace papercraft {
 
+/// `text` for XML or HTML text and attribute values: &, <, >, " and ' as entities; control
+/// characters other than tab and newline (not allowed in XML 1.0) left out.
+std::string xml_escaped(const std::string& text);
+
 /// The SVG document of page `page_index` (0-based) of `layout`.
 /// \throws InvalidInputException if page_index is not a page of the layout.
 std::string pattern_page_svg(const PatternLayout& layout, int page_index,
