@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/build_order.h"
 #include "core/generate.h"
 #include "nodes/export/files.h"
 #include "nodes/export/svg.h"
@@ -122,7 +123,8 @@ TEST(TabStylesEndToEnd, EveryStyleOnABoxAndASphere) {
     options.scale =
         nlohmann::json::parse(read_text(out.dir / "pieces.json")).at("mm_per_unit").get<double>();
     // The default layout is the run's own.
-    EXPECT_EQ(pieces_json(layout_pages(strips, options)), read_text(out.dir / "pieces.json"));
+    const PatternLayout own = layout_pages(strips, options);
+    EXPECT_EQ(pieces_json(own, build_order(own)), read_text(out.dir / "pieces.json"));
     int long_seams = 0;
     for (const TabStyle style :
          {TabStyle::One, TabStyle::Alternate, TabStyle::Both, TabStyle::None}) {
@@ -135,7 +137,7 @@ TEST(TabStylesEndToEnd, EveryStyleOnABoxAndASphere) {
       int tab_paths = 0;
       for (int page = 0; page < static_cast<int>(layout.pages.size()); ++page)
         tab_paths += static_cast<int>(svg_layer(pattern_page_svg(layout, page), "tabs").size());
-      const auto flags = tab_flags(pieces_json(layout));
+      const auto flags = tab_flags(pieces_json(layout, build_order(layout)));
       ASSERT_FALSE(flags.empty());
       for (const auto& [label, sides] : flags) {
         const int tabbed = static_cast<int>(std::count(sides.begin(), sides.end(), true));

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/build_order.h"
 #include "core/errors.h"
 #include "nodes/export/files.h"
 #include "nodes/export/pattern_drawing.h"
@@ -119,7 +120,7 @@ TEST(PrintSide, BackPagesAreTheMirrorOfFrontPages) {
     // pieces.json: the same pieces and seams, each with the same tab.
     auto seams_of = [](const PatternLayout& layout) {
       std::vector<std::string> seams;
-      const auto pieces = nlohmann::json::parse(pieces_json(layout));
+      const auto pieces = nlohmann::json::parse(pieces_json(layout, build_order(layout)));
       for (const auto& piece : pieces.at("pieces"))
         seams.push_back(piece.at("name").dump() + piece.at("seams").dump());
       return seams;

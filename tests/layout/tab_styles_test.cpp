@@ -11,6 +11,7 @@
 #include <set>
 #include <string>
 
+#include "core/build_order.h"
 #include "core/errors.h"
 #include "nodes/export/files.h"
 #include "nodes/layout/pages.h"
@@ -49,7 +50,7 @@ std::vector<const Tab*> tabs_labelled(const PlacedPiece& piece, const std::strin
 // Every seam side of pieces.json: "piece label" -> its `tab` flags.
 std::map<std::string, std::vector<bool>> seam_sides(const PatternLayout& layout) {
   std::map<std::string, std::vector<bool>> sides;
-  const auto pieces = nlohmann::json::parse(pieces_json(layout));
+  const auto pieces = nlohmann::json::parse(pieces_json(layout, build_order(layout)));
   for (const auto& piece : pieces.at("pieces"))
     for (const auto& seam : piece.at("seams"))
       sides[piece.at("name").get<std::string>() + " " + seam.at("label").get<std::string>()]
@@ -174,7 +175,7 @@ TEST(TabStyles, AlternateOnSeamsUnderARunAndAHalfIsOne) {
   const auto strips = prism_strips(l_footprint(20), 60, 0);
   const PatternLayout one = layout_pages(strips, options_with(TabStyle::One));
   const PatternLayout alternate = layout_pages(strips, options_with(TabStyle::Alternate, 500));
-  EXPECT_EQ(pieces_json(alternate), pieces_json(one));
+  EXPECT_EQ(pieces_json(alternate, build_order(alternate)), pieces_json(one, build_order(one)));
   ASSERT_EQ(alternate.pages.size(), one.pages.size());
   for (std::size_t p = 0; p < one.pages.size(); ++p) {
     ASSERT_EQ(alternate.pages[p].pieces.size(), one.pages[p].pieces.size());
