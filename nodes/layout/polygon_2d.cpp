@@ -3,6 +3,7 @@
 #include "nodes/layout/polygon_2d.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -11,18 +12,15 @@
 namespace papercraft::layout_internal {
 namespace {
 
-Vec2 rotate(const Vec2& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
 OrientedBox oriented_box(const std::vector<Vec2>& hull, double angle) {
   OrientedBox box;
   box.angle = angle;
   Vec2 lo = Vec2::Constant(std::numeric_limits<double>::infinity());
   Vec2 hi = -lo;
+  // Each point turned by -angle, the sine and cosine taken once for the whole hull.
+  const double c = std::cos(-angle), s = std::sin(-angle);
   for (const Vec2& p : hull) {
-    Vec2 q = rotate(p, -angle);
+    const Vec2 q(c * p.x() - s * p.y(), s * p.x() + c * p.y());
     lo = lo.cwiseMin(q);
     hi = hi.cwiseMax(q);
   }
@@ -43,6 +41,48 @@ std::vector<double> candidate_angles(const std::vector<Vec2>& hull) {
   return angles;
 }
 
+// Akl and Toussaint's filter: the points farthest along eight directions (the axes and the
+// diagonals) span a convex polygon inside the hull; a point inside it by more than a rounding
+// margin is no corner of the hull, so it is dropped before the sort. Points on or near the
+// polygon's sides stay, so the hull the monotone chain builds is the same.
+void drop_deep_interior(std::vector<Vec2>& points) {
+  if (points.size() < 32) return;
+  // Counter-clockwise from the left: min x, min x+y, min y, max x-y, max x, max x+y, max y,
+  // min x-y.
+  const auto key = [](const Vec2& p, int k) {
+    switch (k) {
+      case 0: return -p.x();
+      case 1: return -(p.x() + p.y());
+      case 2: return -p.y();
+      case 3: return p.x() - p.y();
+      case 4: return p.x();
+      case 5: return p.x() + p.y();
+      case 6: return p.y();
+      default: return -(p.x() - p.y());
+    }
+  };
+  std::array<Vec2, 8> extreme;
+  extreme.fill(points.front());
+  for (const Vec2& p : points)
+    for (int k = 0; k < 8; ++k)
+      if (key(p, k) > key(extreme[k], k)) extreme[k] = p;
+  std::vector<Vec2> polygon;
+  for (const Vec2& p : extreme)
+    if (polygon.empty() || (p != polygon.back() && p != polygon.front())) polygon.push_back(p);
+  if (polygon.size() < 3) return;
+  const double extent = (extreme[4].x() - extreme[0].x()) + (extreme[6].y() - extreme[2].y());
+  const double margin = 1e-9 * extent;
+  const auto deep_inside = [&](const Vec2& p) {
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2& a = polygon[i];
+      const Vec2 d = polygon[(i + 1) % polygon.size()] - a;
+      if (cross(d, p - a) <= margin * d.norm()) return false;
+    }
+    return true;
+  };
+  points.erase(std::remove_if(points.begin(), points.end(), deep_inside), points.end());
+}
+
 }  // namespace
 
 double signed_area(const std::vector<Vec2>& polygon) {
@@ -53,6 +93,7 @@ double signed_area(const std::vector<Vec2>& polygon) {
 }
 
 std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
+  drop_deep_interior(points);
   std::sort(points.begin(), points.end(), [](const Vec2& a, const Vec2& b) {
     return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
