@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <utility>
@@ -216,6 +218,40 @@ bool consistently_oriented(const std::vector<Triangle>& triangles) {
   return std::adjacent_find(directed.begin(), directed.end()) == directed.end();
 }
 
+// X's triangles in a grid, for the overlap tests of try_merge. The trials of one join try the
+// same strip against many partners (every hinge of a band onto one neighbour, every cut of it),
+// so the grids of the strips tried last are kept, per thread, and found again by their exact
+// contents. Which stored triangles a query penetrates does not depend on the grid's cells, so
+// one grid serves every partner.
+std::shared_ptr<TriangleGrid2> grid_of(const FlatStrip& x) {
+  struct Entry {
+    std::vector<Vec2> points;
+    std::vector<Triangle> triangles;
+    std::shared_ptr<TriangleGrid2> grid;
+  };
+  constexpr std::size_t kKept = 8;
+  thread_local std::vector<Entry> kept;  // the one used last at the back
+  const auto same = [&](const Entry& e) {
+    return e.points.size() == x.vertices2d.size() && e.triangles.size() == x.triangles.size() &&
+           std::memcmp(e.points.data(), x.vertices2d.data(), x.vertices2d.size() * sizeof(Vec2)) ==
+               0 &&
+           std::memcmp(e.triangles.data(), x.triangles.data(),
+                       x.triangles.size() * sizeof(Triangle)) == 0;
+  };
+  for (auto it = kept.begin(); it != kept.end(); ++it)
+    if (same(*it)) {
+      std::rotate(it, it + 1, kept.end());
+      return kept.back().grid;
+    }
+  const double cell = mean_edge_length(x);
+  auto grid = std::make_shared<TriangleGrid2>(cell > 0.0 ? cell : 1.0);
+  for (const Triangle& t : x.triangles)
+    grid->insert({x.vertices2d[t[0]], x.vertices2d[t[1]], x.vertices2d[t[2]]});
+  if (kept.size() == kKept) kept.erase(kept.begin());
+  kept.push_back({x.vertices2d, x.triangles, grid});
+  return grid;
+}
+
 // Y moved onto X along one of their chains and welded, or false when no chain gives a
 // congruent, overlap-free union. Without `with_boundary` the union's boundary is left empty
 // (a caller that tries many unions and keeps one finds the boundary of that one).
@@ -224,6 +260,7 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
   std::stable_sort(chains.begin(), chains.end(),
                    [](const Chain& a, const Chain& b) { return a.length > b.length; });
   const double mean_edge = 0.5 * (mean_edge_length(x) + mean_edge_length(y));
+  std::shared_ptr<TriangleGrid2> grid;  // X's, once a chain is congruent
   for (std::size_t seed = 0; seed < chains.size(); ++seed) {
     const Chain& chain = chains[seed];
     std::vector<Vec2> from, to;
@@ -237,13 +274,11 @@ bool try_merge(const FlatStrip& x, const FlatStrip& y, std::vector<Chain> chains
 
     std::vector<Vec2> moved(y.vertices2d.size());
     for (std::size_t v = 0; v < moved.size(); ++v) moved[v] = motion(y.vertices2d[v]);
-    TriangleGrid2 grid(mean_edge > 0.0 ? mean_edge : 1.0);
-    for (const Triangle& t : x.triangles)
-      grid.insert({x.vertices2d[t[0]], x.vertices2d[t[1]], x.vertices2d[t[2]]});
+    if (!grid) grid = grid_of(x);
     const double tolerance = options.overlap_tolerance * mean_edge + 4.0 * residual;
     bool overlap = false;
     for (const Triangle& t : y.triangles)
-      if ((overlap = grid.overlaps({moved[t[0]], moved[t[1]], moved[t[2]]}, tolerance))) break;
+      if ((overlap = grid->overlaps({moved[t[0]], moved[t[1]], moved[t[2]]}, tolerance))) break;
     if (overlap) continue;
 
     // Weld the seed and every other chain that lands on its partner, keeping the map from
@@ -710,23 +745,21 @@ bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil u
 // out beside the edge it shares runs along it with a thin wedge between them, too narrow for
 // a tab over its length; one that leaves the edge at an angle opens at once.
 int slit_points(const FlatStrip& merged, std::size_t first_added, double width) {
-  std::map<std::array<double, 3>, std::vector<int>> first;
-  for (std::size_t v = 0; v < first_added; ++v) {
-    const Vec3& p = merged.vertices3d[v];
-    first[{p.x(), p.y(), p.z()}].push_back(static_cast<int>(v));
-  }
-  int count = 0;
+  // The added points by 3D point (a join adds few), then one pass over the first strip's.
+  std::map<std::array<double, 3>, std::vector<int>> added;
   for (std::size_t v = first_added; v < merged.vertices2d.size(); ++v) {
     const Vec3& p = merged.vertices3d[v];
-    auto it = first.find({p.x(), p.y(), p.z()});
-    if (it == first.end()) continue;
-    for (int u : it->second)
-      if ((merged.vertices2d[u] - merged.vertices2d[v]).norm() < width) {
-        ++count;
-        break;
-      }
+    added[{p.x(), p.y(), p.z()}].push_back(static_cast<int>(v));
   }
-  return count;
+  std::vector<char> slit(merged.vertices2d.size(), 0);
+  for (std::size_t u = 0; u < first_added && !added.empty(); ++u) {
+    const Vec3& p = merged.vertices3d[u];
+    auto it = added.find({p.x(), p.y(), p.z()});
+    if (it == added.end()) continue;
+    for (int v : it->second)
+      if ((merged.vertices2d[u] - merged.vertices2d[v]).norm() < width) slit[v] = 1;
+  }
+  return static_cast<int>(std::count(slit.begin(), slit.end(), 1));
 }
 
 // How narrow strips[neighbour] was and `joined` (it with triangles appended, its own in
@@ -1070,7 +1103,7 @@ bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& opti
     if (best_pair >= 0 && (slit_width <= 0.0 || ++tried > kMostWholeHinges)) break;
     const PairCandidate& pair = pairs[hinge.pair];
     FlatStrip merged;
-    if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged)) continue;
+    if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged, false)) continue;
     const int slit =
         slit_width > 0.0 ? slit_points(merged, strips[pair.x].vertices2d.size(), slit_width) : 0;
     if (best_pair >= 0 && slit >= best_slit) continue;
@@ -1079,6 +1112,7 @@ bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& opti
   }
   if (best_pair < 0) return false;
   const PairCandidate& pair = pairs[best_pair];
+  best.boundary = flat_boundary(best.triangles);
   strips[pair.x] = std::move(best);
   strips.erase(strips.begin() + pair.y);
   return true;
@@ -1268,7 +1302,8 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       const PairCandidate& pair = pairs[hinges[h].pair];
       const int other = pair.x == narrow ? pair.y : pair.x;
       FlatStrip merged;
-      if (!try_merge(strips[pair.x], strips[pair.y], {hinges[h].edge}, options, merged)) continue;
+      if (!try_merge(strips[pair.x], strips[pair.y], {hinges[h].edge}, options, merged, false))
+        continue;
       const int slit = slit_points(merged, strips[pair.x].vertices2d.size(), min_width);
       if (best_hinge >= 0 && slit >= best_slit) continue;
       const double joined_share = share_of(merged);
@@ -1302,6 +1337,7 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       continue;
     }
     const PairCandidate& pair = pairs[hinges[best_hinge].pair];
+    best.boundary = flat_boundary(best.triangles);
     strips[pair.x] = std::move(best);
     share[pair.x] = best_share;
     strips.erase(strips.begin() + pair.y);
