@@ -33,6 +33,10 @@ struct MergeOptions {
   /// cuts in three at most (a join in 3D leaves no seam, a band cut in four leaves many), then
   /// merges with the full depth where pieces are still left short.
   int most_band_pieces = 4;
+  /// The merge node's joins in 3D (a short piece's part refined together with a neighbour's)
+  /// each cost a merge of the whole model to judge; at most this many are judged per model.
+  /// Where the budget runs out the node keeps the best merge reached and says so in a note.
+  int most_rejoin_trials = 4;
 };
 
 /// Joins flat strips of one model whose shared boundaries have congruent flat images.

@@ -186,8 +186,10 @@ int shortfalls(const std::vector<Short>& shorts, double narrow_bound) {
 // tolerance after all: the cut that parted them was made higher up, for a larger part that was
 // not. Such a union, refined and certified as the graph refines a part, that unfolds in one
 // piece replaces the two strips, and the model is merged again; the change is kept when fewer
-// pieces are left too small or too narrow. At most kMostRejoins unions per model. `unfolded`
-// is left as the strips of the merge returned (the unions in place of the parts they join).
+// pieces are left too small or too narrow. At most kMostRejoins unions per model, and at most
+// options.most_rejoin_trials merges of the whole model to judge them (a note says where that
+// budget ran out). `unfolded` is left as the strips of the merge returned (the unions in place
+// of the parts they join).
 constexpr int kMostRejoins = 8;
 
 Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded, Merged merged,
@@ -198,7 +200,9 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
   RefineOptions decide_only = at_tolerance(refine, model.refinement_tolerance());
   decide_only.decide.bounded.locate_maximum = false;
   std::set<std::pair<const AcceptedStrip*, const AcceptedStrip*>> tried;
-  for (int round = 0; round < kMostRejoins; ++round) {
+  int trials = 0;  // whole-model merges judged
+  bool out_of_budget = false;
+  for (int round = 0; round < kMostRejoins && !out_of_budget; ++round) {
     const std::vector<Short> shorts =
         short_pieces(merged, limits, options.narrow_join_share, scale);
     const int before = shortfalls(shorts, options.narrow_join_share);
@@ -220,6 +224,11 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
                         other->candidate->part.path, e.what());
         }
         if (!one) continue;
+        if (trials == options.most_rejoin_trials) {
+          out_of_budget = true;
+          break;
+        }
+        ++trials;
         const std::size_t accepted_faces = glued->n_faces();
         // The union takes the place (the path) of the earlier of the two.
         const Part& first = (j < piece.source ? other : mine)->candidate->part;
@@ -262,9 +271,19 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
         merged = std::move(trial);
         improved = true;
       }
-      if (improved) break;
+      if (improved || out_of_budget) break;
     }
     if (!improved) break;
+  }
+  if (out_of_budget) {
+    const std::string text =
+        "joins in 3D: stopped after " + std::to_string(trials) +
+        " merges of the whole model to judge them (most_rejoin_trials); " +
+        std::to_string(shortfalls(short_pieces(merged, limits, options.narrow_join_share, scale),
+                                  options.narrow_join_share)) +
+        " piece limits still missed";
+    model.note(text);
+    spdlog::info("{}: {}", model.name, text);
   }
   return merged;
 }
@@ -289,6 +308,10 @@ void register_merge_congruent(Registry& registry) {
               "modest_join_factor", [](O & o) -> auto& { return o.modest_join_factor; },
               "a piece under this times min_area_mm2 is hinged onto a neighbour where the union "
               "lies flat (<= 1: never)",
+              at_least(0))
+          .add(
+              "most_rejoin_trials", [](O & o) -> auto& { return o.most_rejoin_trials; },
+              "joins in 3D judged per model, each by a merge of the whole model (0: none)",
               at_least(0));
   registry.add({.name = "merge.congruent",
                 .summary = "join flat strips along congruent shared boundaries",

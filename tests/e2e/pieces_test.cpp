@@ -580,6 +580,32 @@ TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
                        "strip within the tolerance"),
             std::string::npos)
       << notes;
+
+  // Each join judged costs a merge of the whole model: with a budget of one, the first join is
+  // kept, the second is not judged, and a note says where the budget ran out.
+  std::string config = testing::read_text(std::filesystem::path(PAPERCRAFT_SOURCE_DIR) /
+                                          "configs/default.yaml");
+  const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
+  ASSERT_NE(config.find(merge_line), std::string::npos);
+  config.replace(config.find(merge_line), merge_line.size(),
+                 "{impl: merge.congruent, params: {most_rejoin_trials: 1}, to: [layout]}");
+  std::ofstream(dir / "budget.yaml") << config;
+  const testing::CommandResult budget = testing::run_command(
+      "run " + input.string() + " --tolerance 2% --threads 2 -q -c " +
+      (dir / "budget.yaml").string() + " -o " + (dir / "budget").string());
+  ASSERT_EQ(budget.exit_code, 0) << budget.output;
+  const nlohmann::json budget_notes =
+      nlohmann::json::parse(testing::read_text(dir / "budget/couplingdown/report.json"))
+          .at("notes");
+  int joined = 0, stopped = 0;
+  for (const auto& note : budget_notes) {
+    const std::string text = note.get<std::string>();
+    joined += text.find("together with its neighbour's") != std::string::npos;
+    stopped += text.find("joins in 3D: stopped after 1 merges of the whole model") !=
+               std::string::npos;
+  }
+  EXPECT_EQ(joined, 1) << budget_notes.dump();
+  EXPECT_EQ(stopped, 1) << budget_notes.dump();
 }
 
 }  // namespace
