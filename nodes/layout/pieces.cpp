@@ -82,8 +82,13 @@ StripData prepare_strip(const FlatStrip& strip, double mm_per_unit) {
 
 std::vector<Vec2> piece_points(const StripData& data, const std::vector<int>& triangles) {
   std::vector<Vec2> points;
+  std::vector<char> seen(data.points.size(), 0);
   for (int t : triangles)
-    for (int v : data.strip->triangles[t]) points.push_back(data.points[v]);
+    for (int v : data.strip->triangles[t])
+      if (!seen[v]) {
+        seen[v] = 1;
+        points.push_back(data.points[v]);
+      }
   return points;
 }
 

@@ -102,7 +102,7 @@ void validate_strip(const FlatStrip& strip);
 ///         direction or a boundary edge that is not one with the strip on its left.
 StripData prepare_strip(const FlatStrip& strip, double mm_per_unit);
 
-/// The corners (mm) of `triangles`, three per triangle.
+/// The corners (mm) of `triangles`, each vertex once (in the order the triangles first use it).
 std::vector<Vec2> piece_points(const StripData& data, const std::vector<int>& triangles);
 
 /// Boundary loops of a set of triangles, following each boundary edge to the next around
