@@ -25,11 +25,15 @@
 #   --error-bound S       CGAL's error bound as a share of the diagonal (default 1e-6)
 #   --bin PATH            papercraft binary (default build/runner/papercraft)
 #   --baseline PATH       a second binary timed the same way, one thread
+#   --checker PATH        the CGAL checker (default build/bench/cgal_hausdorff_check)
 #   --no-check            leave CGAL out (no check columns)
 #   --work DIR            where runs write (default build/speed); checks are cached in
 #                         DIR/checks.tsv by the files' checksums, so a rerun with identical
 #                         outputs does not check again
 #   --markdown FILE       also write the table to FILE
+#   --report              run nothing: print the table of the runs in --work (rows.tsv) so far,
+#                         as when a long measurement was stopped (give the same --threads and
+#                         --baseline)
 #
 # Setup: the check needs CGAL. When build/bench/cgal_hausdorff_check is missing, the script
 # installs libcgal-dev with apt-get (as root or with sudo) if it is missing, configures the
@@ -48,9 +52,11 @@ check_timeout=900
 error_bound=1e-6
 bin=$root/build/runner/papercraft
 baseline=""
+checker=$root/build/bench/cgal_hausdorff_check
 check=1
 work=$root/build/speed
 markdown=""
+report_only=0
 declare -a meshes=()
 
 . "$root/bench/lib.sh"
@@ -65,9 +71,11 @@ while [[ $# -gt 0 ]]; do
     --error-bound) error_bound=$2; shift 2 ;;
     --bin) bin=$2; shift 2 ;;
     --baseline) baseline=$2; shift 2 ;;
+    --checker) checker=$2; shift 2 ;;
     --no-check) check=0; shift ;;
     --work) work=$2; shift 2 ;;
     --markdown) markdown=$2; shift 2 ;;
+    --report) report_only=1; shift ;;
     -h|--help) usage ;;
     -*) echo "speed.sh: unknown option $1" >&2; usage ;;
     *) meshes+=("$1"); shift ;;
@@ -75,12 +83,13 @@ while [[ $# -gt 0 ]]; do
 done
 [[ -x $bin ]] || { echo "speed.sh: $bin is not an executable" >&2; exit 2; }
 [[ -z $baseline || -x $baseline ]] || { echo "speed.sh: $baseline is not an executable" >&2; exit 2; }
-if [[ ${#meshes[@]} -eq 0 ]]; then
+if [[ $report_only -eq 1 ]]; then
+  meshes=()
+elif [[ ${#meshes[@]} -eq 0 ]]; then
   [[ -n $meshes_dir ]] || meshes_dir=$("$root/bench/cgal_meshes.sh")
   mapfile -t meshes < <(ls "$meshes_dir"/*.off)
 fi
 
-checker=$root/build/bench/cgal_hausdorff_check
 setup_checker() {
   [[ -x $checker ]] && return 0
   local sudo=()
@@ -96,17 +105,19 @@ setup_checker() {
   cmake --build "$root/build" --target cgal_hausdorff_check >&2
   [[ -x $checker ]]
 }
-if [[ $check -eq 1 ]]; then
+if [[ $check -eq 1 && $report_only -eq 0 ]]; then
   setup_checker || { echo "speed.sh: no CGAL checker (run with --no-check to time the runs alone)" >&2; exit 1; }
 fi
 
 mkdir -p "$work"
-cp "$bin" "$work/new-papercraft"
-[[ -n $baseline ]] && cp "$baseline" "$work/old-papercraft"
 checks=$work/checks.tsv
 touch "$checks"
 rows=$work/rows.tsv
-: >"$rows"
+if [[ $report_only -eq 0 ]]; then
+  cp "$bin" "$work/new-papercraft"
+  [[ -n $baseline ]] && cp "$baseline" "$work/old-papercraft"
+  : >"$rows"
+fi
 
 # run_one BIN MESH THREADS DIR: prints "status wall_seconds cpu_seconds" (the whole command's,
 # start-up included; CPU is user + system) and leaves the outputs in DIR/<name>/.
