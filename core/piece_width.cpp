@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "core/errors.h"
@@ -341,6 +342,7 @@ struct Samples3d {
   std::vector<Sample> samples;
   double area = 0.0;
   double step = 0.0;
+  std::size_t count = 0;  // samples laid out, those left out (far from the boundary) included
 };
 
 Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double width,
@@ -391,46 +393,107 @@ Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double wid
   if (area / (spacing * spacing) > double(options.max_cells))
     spacing = std::sqrt(area / double(options.max_cells));
   std::vector<Samples3d::Sample>& samples = out.samples;
-  for (const Triangle& t : piece.triangles) {
-    const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
-                                        piece.vertices[t[2]]};
-    const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
-    // Edge e runs from corner e to corner e + 1.
-    const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
-    const int e = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
-    const double longest = length[e];
-    const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
-    const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
-    if (longest > spacing && longest > 4.0 * height) {
-      const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
-      const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
-      out.step = std::max(out.step, height / rows);
-      for (int j = 0; j < rows; ++j) {
-        // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
-        // middle: from p towards r and from q towards r by that share.
-        const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
-        const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
-        const Vec3 start = p + at * (r - p), end = q + at * (r - q);
-        const int count =
-            std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
-        out.step = std::max(out.step, (end - start).norm() / count);
-        for (int i = 0; i < count; ++i)
-          samples.push_back({start + ((i + 0.5) / count) * (end - start), band / count, false});
+  // Only samples within the radius and a reach (below) of the boundary bear on the outcome: one
+  // farther out is a centre, and covers only samples that are no centres, within the radius of
+  // the boundary. So a sample farther than that is left out, and what is measured stays the
+  // same. Boundary pieces are at most a radius long: a point within that distance (twice the
+  // radius and a step) of one lies within `near_size` of its midpoint, so in a cell of that
+  // size next to the midpoint's; `near_cells` holds those cells.
+  double near_size = 0.0;
+  std::unordered_set<Cell, CellHash> near_cells;
+  bool check_each = false;  // whether the current triangle's samples are looked up one by one
+  auto take = [&](const Vec3& point, double share) {
+    if (!check_each || near_cells.count(cell_of(point, near_size)) > 0)
+      samples.push_back({point, share, false});
+  };
+  // Lays out the samples of every triangle: `step` and `count` take all of them, `samples` only
+  // those of the triangles marked in `emit` (none when it is empty): 1, those near the
+  // boundary; 2, all.
+  auto sample_triangles = [&](const std::vector<char>& emit) {
+    for (std::size_t n = 0; n < piece.triangles.size(); ++n) {
+      const Triangle& t = piece.triangles[n];
+      const bool keep = !emit.empty() && emit[n] != 0;
+      check_each = keep && emit[n] == 1;
+      const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
+                                          piece.vertices[t[2]]};
+      const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
+      // Edge e runs from corner e to corner e + 1.
+      const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
+      const int e =
+          static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+      const double longest = length[e];
+      const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
+      const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
+      if (longest > spacing && longest > 4.0 * height) {
+        const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
+        const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
+        out.step = std::max(out.step, height / rows);
+        for (int j = 0; j < rows; ++j) {
+          // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
+          // middle: from p towards r and from q towards r by that share.
+          const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
+          const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
+          const Vec3 start = p + at * (r - p), end = q + at * (r - q);
+          const int count =
+              std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
+          out.step = std::max(out.step, (end - start).norm() / count);
+          out.count += count;
+          if (!keep) continue;
+          for (int i = 0; i < count; ++i)
+            take(start + ((i + 0.5) / count) * (end - start), band / count);
+        }
+        continue;
       }
-      continue;
+      const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
+      const double share = triangle_area / (double(k) * k);
+      out.step = std::max(out.step, longest / k);
+      out.count += std::size_t(k) * k;
+      if (!keep) continue;
+      const Vec3 u = (b - a) / k, v = (c - a) / k;
+      for (int i = 0; i < k; ++i) {
+        for (int j = 0; i + j < k; ++j) {
+          take(a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share);  // upright
+          if (i + j + 1 < k) take(a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share);
+        }
+      }
     }
-    const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
-    const double share = triangle_area / (double(k) * k);
-    out.step = std::max(out.step, longest / k);
-    const Vec3 u = (b - a) / k, v = (c - a) / k;
-    for (int i = 0; i < k; ++i) {
-      for (int j = 0; i + j < k; ++j) {
-        samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share, false});  // upright
-        if (i + j + 1 < k)
-          samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share, false});
-      }
+  };
+  // The first pass finds the step the reach depends on; the second takes the samples near the
+  // boundary, of the triangles that come near it.
+  sample_triangles({});
+  near_size = 2.5 * radius + out.step;
+  for (const auto& entry : boundary) {
+    for (const auto& [a, b] : entry.second) {
+      const Cell c = cell_of(0.5 * (a + b), near_size);
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy)
+          for (std::int64_t dz = -1; dz <= 1; ++dz)
+            near_cells.insert({c[0] + dx, c[1] + dy, c[2] + dz});
     }
   }
+  std::vector<char> emit(piece.triangles.size(), 0);
+  for (std::size_t n = 0; n < piece.triangles.size(); ++n) {
+    const Triangle& t = piece.triangles[n];
+    Vec3 low = piece.vertices[t[0]], high = low;
+    for (int k = 1; k < 3; ++k) {
+      low = low.cwiseMin(piece.vertices[t[k]]);
+      high = high.cwiseMax(piece.vertices[t[k]]);
+    }
+    const Cell from = cell_of(low, near_size), to = cell_of(high, near_size);
+    const std::int64_t cells = (to[0] - from[0] + 1) * (to[1] - from[1] + 1) * (to[2] - from[2] + 1);
+    if (cells > static_cast<std::int64_t>(near_cells.size())) {
+      emit[n] = 1;  // a large triangle: its samples are looked up one by one
+      continue;
+    }
+    std::int64_t in = 0;
+    for (std::int64_t x = from[0]; x <= to[0]; ++x)
+      for (std::int64_t y = from[1]; y <= to[1]; ++y)
+        for (std::int64_t z = from[2]; z <= to[2]; ++z) in += near_cells.count({x, y, z});
+    emit[n] = in == 0 ? 0 : in == cells ? 2 : 1;
+  }
+  out.step = 0.0;
+  out.count = 0;
+  sample_triangles(emit);
   // Samples are taken cell by cell: a cell's samples share the 27 cells around it, looked up
   // once for all of them (a thin triangle puts many samples into one cell).
   auto by_cell = [&](double size, auto&& take) {
@@ -512,7 +575,7 @@ NarrowMeasure narrow_measure(const TriangleMesh& piece, double width,
                              const PieceWidthOptions& options) {
   const Samples3d measured = narrow_samples("narrow_measure", piece, width, options);
   NarrowMeasure result;
-  result.samples = measured.samples.size();
+  result.samples = measured.count;
   if (!(measured.area > 0.0)) return result;
   // Narrow samples joined when closer than 1.5 steps (neighbours on one triangle or across a
   // shared edge), by union-find over a grid of cells of that size.

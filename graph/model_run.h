@@ -23,6 +23,8 @@
 
 namespace papercraft {
 
+class CutMemo;  // engine/refine/cut_memo.h
+
 /// Settings that apply to every model of a run (from the command line and the config).
 struct RunSettings {
   ToleranceSpec tolerance;
@@ -135,6 +137,11 @@ struct ModelRun {
   std::vector<bool> gather_flushed;
   /// Framework-internal: the node whose call on this model started last (for progress).
   std::atomic<int> stage{-1};
+
+  /// Cuts the segment stage made while it chose the parts (count_strips), for the cut stage to
+  /// take instead of cutting the same part again. Set before the parts are emitted; null when
+  /// there are none.
+  std::shared_ptr<CutMemo> cut_memo;
 
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -159,10 +159,11 @@ struct Pending {
 
 // Depth first through the refinement of `root`. `accept(pending, boundaries, strip, verdict)`
 // takes each accepted strip and returns false to stop; `room(pending_count)` is asked after
-// each cut and returns false to stop. Returns false when stopped.
+// each cut and returns false to stop; `memo`, where given, keeps every cut. Returns false when
+// stopped.
 template <class Accept, class Room>
 bool refine_depth_first(const Mesh& root, const RefineOptions& options, const PieceLimits& limits,
-                        Accept accept, Room room) {
+                        Accept accept, Room room, CutMemo* memo = nullptr) {
   std::vector<Pending> stack;
   stack.push_back({root, "", 0});
   while (!stack.empty()) {
@@ -178,6 +179,7 @@ bool refine_depth_first(const Mesh& root, const RefineOptions& options, const Pi
     std::vector<Mesh> pieces =
         cut_rejected_piece(item.piece, boundaries, verdict, item.depth, options,
                            item.path.empty() ? "(whole)" : item.path, limits);
+    if (memo) memo->keep(item.piece, boundaries, verdict, pieces);
     if (!room(stack.size() + pieces.size())) return false;
     // Pushed last first, so the pieces are refined in cut order.
     for (std::size_t i = pieces.size(); i-- > 0;) {
@@ -204,8 +206,8 @@ std::vector<RefinedStrip> refine_part(const Mesh& part, const RefineOptions& opt
   return strips;
 }
 
-int count_strips(const Mesh& part, const RefineOptions& options, int cap,
-                 const PieceLimits& limits) {
+int count_strips(const Mesh& part, const RefineOptions& options, int cap, const PieceLimits& limits,
+                 CutMemo* memo) {
   require_tolerance(options, "count_strips");  // a caller's mistake, not a part's failure
   int strips = 0;
   try {
@@ -215,7 +217,7 @@ int count_strips(const Mesh& part, const RefineOptions& options, int cap,
           return ++strips <= cap;
         },
         // Every piece still to refine makes at least one strip.
-        [&](std::size_t pending) { return strips + static_cast<long>(pending) <= cap; });
+        [&](std::size_t pending) { return strips + static_cast<long>(pending) <= cap; }, memo);
     return finished ? strips : cap + 1;
   } catch (const std::exception&) {
     return cap + 1;

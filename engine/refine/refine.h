@@ -23,6 +23,7 @@
 #include "core/mesh.h"
 #include "core/piece_limits.h"
 #include "core/strip.h"
+#include "engine/refine/cut_memo.h"
 #include "engine/refine/decide.h"
 #include "engine/refine/rejected_cut.h"
 #include "engine/ruled/twist_dp.h"
@@ -133,9 +134,10 @@ std::vector<RefinedStrip> refine_part(const Mesh& part, const RefineOptions& opt
 
 /// How many strips refine_part would make of `part`, counting no further than `cap`: returns
 /// cap + 1 once more would be needed, and also when the refinement fails (a part that cannot
-/// be approximated is no better choice than any other). Deterministic.
+/// be approximated is no better choice than any other). Deterministic. With `memo`, every cut
+/// it makes is kept there (CutMemo::keep), for a later refinement of the same part to take.
 /// \throws InvalidInputException unless options.tolerance > 0.
 int count_strips(const Mesh& part, const RefineOptions& options, int cap = INT_MAX - 1,
-                 const PieceLimits& limits = {});
+                 const PieceLimits& limits = {}, CutMemo* memo = nullptr);
 
 }  // namespace papercraft

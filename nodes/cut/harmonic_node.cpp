@@ -5,6 +5,9 @@
 //
 //   cut: {impl: cut.harmonic, params: {max_depth: 64}, back: [select]}
 
+#include <optional>
+#include <vector>
+
 #include "engine/refine/refine.h"
 #include "graph/messages.h"
 #include "graph/model_run.h"
@@ -22,8 +25,7 @@ void register_cut_harmonic(Registry& registry) {
               "snap an iso-line crossing to a vertex within this fraction of the edge length",
               ParamRange{0.0, 0.5, false, true})
           .add(
-              "straighten_passes",
-              [](O & o) -> auto& { return o.cut.cut.cut.straighten_passes; },
+              "straighten_passes", [](O & o) -> auto& { return o.cut.cut.cut.straighten_passes; },
               "passes sliding each crossing along its edge to shorten a cut that zig-zags "
               "across thin triangles (0: the exact iso-line)",
               between(0, 100))
@@ -75,10 +77,16 @@ void register_cut_harmonic(Registry& registry) {
         return make_body([refine](const Envelope& in, Emitter& out) {
           const RejectedStrip& rejected = in.get<RejectedStrip>();
           const Part& parent = rejected.candidate->part;
+          // The segment stage may have made this very cut already (CutMemo).
+          std::optional<std::vector<Mesh>> kept;
+          if (in.model->cut_memo)
+            kept = in.model->cut_memo->take(*parent.mesh, *rejected.candidate, rejected.verdict);
           std::vector<Mesh> pieces =
-              cut_rejected_piece(*parent.mesh, *rejected.candidate, rejected.verdict, parent.depth,
-                                 at_tolerance(refine, in.model->refinement_tolerance()),
-                                 parent.path, in.model->piece_limits());
+              kept ? std::move(*kept)
+                   : cut_rejected_piece(*parent.mesh, *rejected.candidate, rejected.verdict,
+                                        parent.depth,
+                                        at_tolerance(refine, in.model->refinement_tolerance()),
+                                        parent.path, in.model->piece_limits());
           in.model->update([](ModelRecord& record) { ++record.cuts; });
           for (std::size_t i = 0; i < pieces.size(); ++i) {
             Part part;
