@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "core/edge_map.h"
+#include "nodes/layout/pages.h"
 #include "nodes/layout/piece_shapes.h"
 
 namespace papercraft::layout_internal {
