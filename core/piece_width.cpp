@@ -343,6 +343,52 @@ struct Samples3d {
   double step = 0.0;
 };
 
+// The samples of every triangle of the piece, at most `spacing` apart (see narrow_samples),
+// into out.samples, their largest distance apart in out.step.
+void sample_triangles(const TriangleMesh& piece, double spacing, Samples3d& out) {
+  std::vector<Samples3d::Sample>& samples = out.samples;
+  for (const Triangle& t : piece.triangles) {
+    const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
+                                        piece.vertices[t[2]]};
+    const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
+    // Edge e runs from corner e to corner e + 1.
+    const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
+    const int e = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    const double longest = length[e];
+    const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
+    const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
+    if (longest > spacing && longest > 4.0 * height) {
+      const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
+      const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
+      out.step = std::max(out.step, height / rows);
+      for (int j = 0; j < rows; ++j) {
+        // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
+        // middle: from p towards r and from q towards r by that share.
+        const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
+        const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
+        const Vec3 start = p + at * (r - p), end = q + at * (r - q);
+        const int count =
+            std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
+        out.step = std::max(out.step, (end - start).norm() / count);
+        for (int i = 0; i < count; ++i)
+          samples.push_back({start + ((i + 0.5) / count) * (end - start), band / count, false});
+      }
+      continue;
+    }
+    const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
+    const double share = triangle_area / (double(k) * k);
+    out.step = std::max(out.step, longest / k);
+    const Vec3 u = (b - a) / k, v = (c - a) / k;
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; i + j < k; ++j) {
+        samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share, false});  // upright
+        if (i + j + 1 < k)
+          samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share, false});
+      }
+    }
+  }
+}
+
 Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double width,
                          const PieceWidthOptions& options) {
   if (!(width > 0.0) || !std::isfinite(width))
@@ -390,47 +436,8 @@ Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double wid
   double spacing = width * options.cell_fraction;
   if (area / (spacing * spacing) > double(options.max_cells))
     spacing = std::sqrt(area / double(options.max_cells));
+  sample_triangles(piece, spacing, out);
   std::vector<Samples3d::Sample>& samples = out.samples;
-  for (const Triangle& t : piece.triangles) {
-    const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
-                                        piece.vertices[t[2]]};
-    const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
-    // Edge e runs from corner e to corner e + 1.
-    const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
-    const int e = static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
-    const double longest = length[e];
-    const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
-    const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
-    if (longest > spacing && longest > 4.0 * height) {
-      const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
-      const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
-      out.step = std::max(out.step, height / rows);
-      for (int j = 0; j < rows; ++j) {
-        // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
-        // middle: from p towards r and from q towards r by that share.
-        const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
-        const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
-        const Vec3 start = p + at * (r - p), end = q + at * (r - q);
-        const int count =
-            std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
-        out.step = std::max(out.step, (end - start).norm() / count);
-        for (int i = 0; i < count; ++i)
-          samples.push_back({start + ((i + 0.5) / count) * (end - start), band / count, false});
-      }
-      continue;
-    }
-    const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
-    const double share = triangle_area / (double(k) * k);
-    out.step = std::max(out.step, longest / k);
-    const Vec3 u = (b - a) / k, v = (c - a) / k;
-    for (int i = 0; i < k; ++i) {
-      for (int j = 0; i + j < k; ++j) {
-        samples.push_back({a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share, false});  // upright
-        if (i + j + 1 < k)
-          samples.push_back({a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share, false});
-      }
-    }
-  }
   // Samples are taken cell by cell: a cell's samples share the 27 cells around it, looked up
   // once for all of them (a thin triangle puts many samples into one cell).
   auto by_cell = [&](double size, auto&& take) {
