@@ -168,6 +168,41 @@ bool segment_may_meet_triangle(const Vec2& a, const Vec2& b, const std::array<Ve
   return !separated(Vec2(-direction.y(), direction.x()));
 }
 
+// The general consistency check of a patch of the target (where its edge neighbours do not
+// decide): its edges sorted, every edge held by two patch triangles in opposite directions or
+// by one, and then `boundary_meets_piece(from, to)` false; none held by three or more.
+template <class BoundaryMeetsPiece>
+bool patch_consistent(const TriangleMesh& mesh, const std::vector<int>& patch,
+                      BoundaryMeetsPiece boundary_meets_piece) {
+  // Edge (low, high) with its direction bit, sortable as one integer.
+  thread_local std::vector<std::uint64_t> edges;
+  edges.clear();
+  for (int t : patch) {
+    const Triangle& f = mesh.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const auto from = static_cast<std::uint64_t>(f[k]),
+                 to = static_cast<std::uint64_t>(f[(k + 1) % 3]);
+      edges.push_back(from < to ? (from << 33 | to << 1 | 1) : (to << 33 | from << 1));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    const std::uint64_t key = edges[i] >> 1;
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] >> 1 == key) ++j;
+    if (j - i == 2) {
+      if ((edges[i] & 1) == (edges[i + 1] & 1)) return false;  // same direction twice
+    } else if (j - i == 1) {
+      if (boundary_meets_piece(static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)))
+        return false;
+    } else {
+      return false;  // an edge of three or more facing triangles
+    }
+    i = j;
+  }
+  return true;
+}
+
 double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh& target,
                               const std::vector<int>& neighbours, double threshold) {
   const Vec3& origin = c[0].point;
@@ -205,11 +240,8 @@ double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh&
   }
   thread_local std::vector<int> nearby;
   thread_local std::vector<int> patch;
-  // Edge (low, high) with its direction bit, sortable as one integer.
-  thread_local std::vector<std::uint64_t> edges;
   nearby.clear();
   patch.clear();
-  edges.clear();
   // A patch much larger than that costs more than the splits it would save.
   if (!target.triangles_meeting(box, nearby, kMaxPatch)) return kInfinity;
 
@@ -308,37 +340,7 @@ double projection_upper_bound(const std::array<Corner, 3>& c, const TriangleBvh&
     if (irregular) break;
   }
   if (!irregular) return bound;
-
-  for (int t : patch) {
-    const Triangle& f = mesh.triangles[t];
-    for (int k = 0; k < 3; ++k) {
-      const auto from = static_cast<std::uint64_t>(f[k]),
-                 to = static_cast<std::uint64_t>(f[(k + 1) % 3]);
-      edges.push_back(from < to ? (from << 33 | to << 1 | 1) : (to << 33 | from << 1));
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  for (std::size_t i = 0; i < edges.size();) {
-    const std::uint64_t key = edges[i] >> 1;
-    std::size_t j = i + 1;
-    while (j < edges.size() && edges[j] >> 1 == key) ++j;
-    if (j - i == 2) {
-      if ((edges[i] & 1) == (edges[i + 1] & 1)) return kInfinity;  // same direction twice
-    } else if (j - i == 1) {
-      const Vec2 a = project(mesh.vertices[static_cast<int>(key >> 32)]);
-      const Vec2 b = project(mesh.vertices[static_cast<int>(key & 0xffffffffu)]);
-      if (!(std::max(a.x(), b.x()) < piece_min.x() || std::min(a.x(), b.x()) > piece_max.x() ||
-            std::max(a.y(), b.y()) < piece_min.y() || std::min(a.y(), b.y()) > piece_max.y()) &&
-          segment_may_meet_triangle(a, b, piece, margin)) {
-        return kInfinity;
-      }
-    } else {
-      return kInfinity;  // an edge of three or more facing triangles
-    }
-    i = j;
-  }
-
-  return bound;
+  return patch_consistent(mesh, patch, boundary_meets_piece) ? bound : kInfinity;
 }
 
 }  // namespace
