@@ -161,5 +161,92 @@ TEST(LayoutPages, LabelInABentSlotGetsALeaderThatBends) {
   EXPECT_EQ(bent, 1);
 }
 
+
+// The crowded texts a layout's notes name: seam labels ("label X finds no spot") and piece
+// numbers ("piece N: no room for its number").
+std::set<std::string> crowded_texts(const PatternLayout& layout) {
+  std::set<std::string> names;
+  for (const std::string& note : layout.warnings) {
+    const auto label = note.find(": label ");
+    if (label != std::string::npos && note.find(" finds no spot") != std::string::npos)
+      names.insert(note.substr(label + 8, note.find(" finds no spot") - label - 8));
+    if (note.rfind("piece ", 0) == 0 && note.find(": no room for its number") != std::string::npos)
+      names.insert(note.substr(6, note.find(':') - 6));
+  }
+  return names;
+}
+
+// On small pieces crowded with seams (prisms and seamed grids printed small), every text the
+// notes do not name as crowded is clear of every other text and crossed by no cut line of its
+// page; and the small sizes drive labels off their seams (beside the piece, or along leaders).
+TEST(LayoutAnnotations, LabelsClearEachOtherAndEveryCutLine) {
+  std::mt19937 random(2024);
+  std::uniform_int_distribution<int> cells(1, 5);
+  std::uniform_real_distribution<double> size(0.5, 2.0);
+  int texts = 0, away = 0;
+  for (double height : {12.0, 20.0, 35.0, 60.0}) {
+    std::vector<FlatStrip> strips = prism_strips(square_footprint(1.0), 1.0, 0);
+    for (FlatStrip& s : prism_strips(l_footprint(1.0), 1.5, 3)) {
+      for (BoundaryEdge& e : s.boundary) e.label += "L";
+      strips.push_back(std::move(s));
+    }
+    for (int k = 0; k < 8; ++k) {
+      const int nx = cells(random), ny = cells(random);
+      const double w = size(random), h = size(random);
+      FlatStrip s = cell_strip(10 + k, nx, ny, w, h);
+      const std::string label = "R" + std::to_string(k / 2);
+      if (k % 2 == 0)
+        mark_seam(s, label, 11 + k, [&](const Vec2& m) { return std::abs(m.y()) < 1e-9; });
+      else
+        mark_seam(s, label, 9 + k, [&](const Vec2& m) { return std::abs(m.y() - ny * h) < 1e-9; });
+      strips.push_back(std::move(s));
+    }
+    LayoutOptions options;
+    options.height_mm = height;
+    options.tab_width_mm = 3.0;
+    const PatternLayout layout = layout_pages(strips, options);
+    SCOPED_TRACE("height " + std::to_string(height));
+    const std::set<std::string> crowded = crowded_texts(layout);
+    for (const Page& page : layout.pages) {
+      std::vector<std::array<Vec2, 2>> cuts;
+      for (const auto* pieces : {&page.pieces, &page.joints})
+        for (const PlacedPiece& piece : *pieces)
+          for (const auto& loop : piece.cut_outline)
+            for (std::size_t i = 0; i < loop.size(); ++i)
+              cuts.push_back({loop[i], loop[(i + 1) % loop.size()]});
+      std::vector<const Label*> page_texts;
+      for (const auto* pieces : {&page.pieces, &page.joints})
+        for (const PlacedPiece& piece : *pieces) {
+          page_texts.push_back(&piece.number);
+          for (const Label& label : piece.labels) {
+            page_texts.push_back(&label);
+            away += label.outside || !label.leader.empty();
+          }
+        }
+      for (std::size_t a = 0; a < page_texts.size(); ++a) {
+        const Label& text = *page_texts[a];
+        if (crowded.count(text.text)) continue;
+        ++texts;
+        const auto box = label_box(text);
+        const std::vector<Vec2> polygon(box.begin(), box.end());
+        for (const auto& cut : cuts)
+          for (int i = 0; i < 4; ++i)
+            EXPECT_FALSE(segments_cross(cut[0], cut[1], box[i], box[(i + 1) % 4], kEps))
+                << "a cut line crosses text " << text.text;
+        for (std::size_t b = a + 1; b < page_texts.size(); ++b) {
+          if (crowded.count(page_texts[b]->text)) continue;
+          const auto other = label_box(*page_texts[b]);
+          EXPECT_FALSE(polygons_overlap(polygon, std::vector<Vec2>(other.begin(), other.end())))
+              << "texts " << text.text << " and " << page_texts[b]->text << " overlap";
+        }
+      }
+    }
+  }
+  EXPECT_GT(texts, 100);
+  EXPECT_GT(away, 0) << "no label left its seam: the pieces are not crowded enough to test";
+  std::cout << "[ labels   ] " << texts << " clear texts, " << away
+            << " labels beside their piece or on a leader\n";
+}
+
 }  // namespace
 }  // namespace papercraft

@@ -169,5 +169,69 @@ TEST(LayoutPages, ShortSeamGetsASteeperTab) {
   EXPECT_EQ(layout.stats.seams_without_tab, 0);
 }
 
+
+// Distance from p to the polyline `base`.
+double distance_to_polyline(const Vec2& p, const std::vector<Vec2>& base) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < base.size(); ++i)
+    nearest = std::min(nearest, distance_to_segment(p, base[i], base[i + 1]));
+  return nearest;
+}
+
+// In every tab style, on notched grids and prisms whose seams crowd each other: no flap covers
+// its own piece or another flap of the piece, every flap lies within the room the splitter keeps
+// for it (1.15 tab widths of its base), and every seam side a tab names is a seam of the piece.
+TEST(LayoutTabs, TabsNeverCoverTheirPieceOrEachOther) {
+  std::vector<FlatStrip> strips = prism_strips(l_footprint(20.0), 15.0, 0);
+  // A comb: teeth one cell wide with one-cell slots between them, seamed all along its bottom.
+  FlatStrip comb = cell_strip(3, 7, 4, 6.0, 6.0, [](int i, int j) { return j == 0 || i % 2 == 0; });
+  mark_seam(comb, "C", 4, [](const Vec2& m) { return std::abs(m.y()) < 1e-9; });
+  FlatStrip bar = cell_strip(4, 7, 1, 6.0, 6.0);
+  for (Vec2& v : bar.vertices2d) v.y() = -v.y();
+  for (std::size_t i = 0; i < bar.vertices2d.size(); ++i)
+    bar.vertices3d[i] = Vec3(bar.vertices2d[i].x(), bar.vertices2d[i].y(), 0.0);
+  for (Triangle& t : bar.triangles) std::swap(t[1], t[2]);
+  bar.boundary = testing::open_boundary(bar.triangles);
+  mark_seam(bar, "C", 3, [](const Vec2& m) { return std::abs(m.y()) < 1e-9; });
+  for (std::size_t i = 0; i < comb.vertices2d.size(); ++i)
+    comb.vertices3d[i] = Vec3(comb.vertices2d[i].x(), comb.vertices2d[i].y(), 0.0);
+  strips.push_back(comb);
+  strips.push_back(bar);
+  int flaps = 0;
+  for (TabStyle style : {TabStyle::One, TabStyle::Alternate, TabStyle::Both}) {
+    LayoutOptions options;
+    options.scale = 1.0;
+    options.tab_width_mm = 5.0;
+    options.tab_style = style;
+    options.alternate_run_mm = 10.0;
+    const PatternLayout layout = layout_pages(strips, options);
+    SCOPED_TRACE("tab style " + std::to_string(static_cast<int>(style)));
+    for (const Page& page : layout.pages)
+      for (const PlacedPiece& piece : page.pieces) {
+        std::set<std::string> seams;
+        for (const PlacedEdge& e : piece.edges)
+          if (e.kind == EdgeKind::Seam) seams.insert(e.label);
+        for (const Tab& tab : piece.tabs) {
+          EXPECT_TRUE(seams.count(tab.label)) << "tab " << tab.label << " names no seam";
+          for (std::size_t f = 0; f < tab.flaps.size(); ++f) {
+            ++flaps;
+            for (const Vec2& q : tab.flaps[f])
+              EXPECT_LE(distance_to_polyline(q, tab.bases[f]), 1.15 * options.tab_width_mm + kEps)
+                  << "a flap of tab " << tab.label << " reaches past its room";
+          }
+        }
+        const std::vector<Shape> shapes = shapes_of(piece);
+        for (std::size_t i = 0; i < shapes.size(); ++i)
+          for (std::size_t j = i + 1; j < shapes.size(); ++j) {
+            if (shapes[i].tab < 0 && shapes[j].tab < 0) continue;
+            if (!boxes_overlap(shapes[i], shapes[j])) continue;
+            EXPECT_FALSE(polygons_overlap(shapes[i].polygon, shapes[j].polygon))
+                << "piece " << piece.name << ": shapes " << i << " and " << j << " overlap";
+          }
+      }
+  }
+  EXPECT_GT(flaps, 20);
+}
+
 }  // namespace
 }  // namespace papercraft
