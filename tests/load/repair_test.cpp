@@ -525,5 +525,147 @@ TEST_F(LoadOpenMeshTest, ATwoSidedSurfaceKeepsOneSide) {
   // A tetrahedron with a flap is one-sided: the flap goes whole (AFlapFoldedFlatOntoItself...).
 }
 
+// ---------------------------------------------------------------------------------------------
+// The repairs on generated soups, with exact counts
+
+using load_internal::check_topology_and_orient;
+using load_internal::heal_degenerate_triangles;
+using load_internal::merge_duplicate_vertices;
+using load_internal::remove_duplicate_triangles;
+using load_internal::remove_unreferenced_vertices;
+using load_internal::Soup;
+using load_internal::Triangle3;
+using load_internal::Vec3d;
+
+Soup soup_of(const std::vector<Vec3d>& positions, const std::vector<Triangle3>& triangles) {
+  Soup soup;
+  soup.positions = positions;
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    soup.source_vertex.push_back(static_cast<int>(v));
+  soup.triangles = triangles;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    soup.source_face.push_back(static_cast<int>(t));
+  return soup;
+}
+
+std::vector<Vec3d> tetra_positions() {
+  std::vector<Vec3d> positions;
+  for (const auto& p : kTetraPoints) positions.emplace_back(p[0], p[1], p[2]);
+  return positions;
+}
+
+std::vector<Triangle3> tetra_triangles() {
+  std::vector<Triangle3> triangles;
+  for (const auto& f : kTetraFaces) triangles.push_back({f[0], f[1], f[2]});
+  return triangles;
+}
+
+bool has_line(const std::vector<std::string>& lines, const std::string& line) {
+  return std::find(lines.begin(), lines.end(), line) != lines.end();
+}
+
+TEST(LoadRepairs, VerticesMergedAndDroppedAreCountedExactly) {
+  std::vector<Vec3d> positions = tetra_positions();
+  positions.push_back(positions[0]);                      // 4: an exact copy of 0
+  positions.push_back(positions[1] + Vec3d(1e-9, 0, 0));  // 5: near 1
+  positions.push_back(Vec3d(5, 5, 5));                    // 6: used by no face
+  std::vector<Triangle3> triangles = tetra_triangles();
+  triangles[0] = {4, 2, 1};
+  triangles[1] = {0, 5, 3};
+  Soup soup = soup_of(positions, triangles);
+  EXPECT_EQ(merge_duplicate_vertices(soup, 0.0), 1u);
+  EXPECT_EQ(merge_duplicate_vertices(soup, 1e-6), 1u);
+  EXPECT_EQ(remove_unreferenced_vertices(soup), 1u);
+  ASSERT_EQ(soup.positions.size(), 4u);
+  ASSERT_EQ(soup.source_vertex.size(), 4u);
+  for (const Triangle3& t : soup.triangles)
+    for (int v : t) EXPECT_LT(v, 4);
+  std::vector<std::string> repairs;
+  check_topology_and_orient(soup, true, "tetra", repairs);
+  EXPECT_TRUE(repairs.empty()) << ::testing::PrintToString(repairs);
+}
+
+TEST(LoadRepairs, DuplicateFacesAreCountedByKind) {
+  {  // a copy facing the same way
+    std::vector<Triangle3> triangles = tetra_triangles();
+    triangles.push_back(triangles[1]);
+    Soup soup = soup_of(tetra_positions(), triangles);
+    const auto removed = remove_duplicate_triangles(soup);
+    EXPECT_EQ(removed.copies, 1u);
+    EXPECT_EQ(removed.folds, 0u);
+    EXPECT_EQ(removed.other_sides, 0u);
+    EXPECT_EQ(soup.triangles.size(), 4u);
+  }
+  {  // a flap folded flat onto itself, on a one-sided surface: both faces go
+    std::vector<Vec3d> positions = tetra_positions();
+    positions.push_back(Vec3d(2, 0, 0));
+    std::vector<Triangle3> triangles = tetra_triangles();
+    triangles.push_back({0, 1, 4});
+    triangles.push_back({1, 0, 4});
+    Soup soup = soup_of(positions, triangles);
+    const auto removed = remove_duplicate_triangles(soup);
+    EXPECT_EQ(removed.copies, 0u);
+    EXPECT_EQ(removed.folds, 1u);
+    EXPECT_EQ(soup.triangles.size(), 4u);
+    EXPECT_EQ(soup.source_face.size(), 4u);
+  }
+  {  // a two-sided sheet: one face of each pair is kept
+    std::vector<Vec3d> positions{Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(1, 1, 0), Vec3d(0, 1, 0)};
+    Soup soup = soup_of(positions, {{0, 1, 2}, {0, 2, 3}, {2, 1, 0}, {3, 2, 0}});
+    const auto removed = remove_duplicate_triangles(soup);
+    EXPECT_EQ(removed.other_sides, 2u);
+    EXPECT_EQ(removed.folds, 0u);
+    EXPECT_EQ(soup.triangles.size(), 2u);
+  }
+}
+
+TEST(LoadRepairs, AFaceWithARepeatedCornerIsDroppedAndCounted) {
+  std::vector<Triangle3> triangles = tetra_triangles();
+  triangles.push_back({0, 0, 1});
+  Soup soup = soup_of(tetra_positions(), triangles);
+  const auto healed = heal_degenerate_triangles(soup, 1e-12);
+  EXPECT_EQ(healed.collapsed, 1u);
+  EXPECT_EQ(healed.flat, 0u);
+  EXPECT_EQ(soup.triangles.size(), 4u);
+}
+
+TEST(LoadRepairs, TopologyRepairsAreCountedExactly) {
+  {  // a bowtie: two triangles sharing one corner get a vertex each
+    Soup soup =
+        soup_of({Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(1, 1, 0), Vec3d(-1, 0, 0), Vec3d(-1, -1, 0)},
+                {{0, 1, 2}, {0, 3, 4}});
+    Soup refused = soup;
+    std::vector<std::string> repairs;
+    EXPECT_THROW(check_topology_and_orient(refused, false, "bowtie", repairs),
+                 InvalidInputException);
+    check_topology_and_orient(soup, true, "bowtie", repairs);
+    EXPECT_EQ(soup.positions.size(), 6u);
+    EXPECT_TRUE(
+        has_line(repairs, "split 1 non-manifold vertex into one vertex per fan (1 copy added)"))
+        << ::testing::PrintToString(repairs);
+    EXPECT_NE(soup.triangles[0][0], soup.triangles[1][0]);
+  }
+  {  // one face of a tetrahedron the wrong way round
+    std::vector<Triangle3> triangles = tetra_triangles();
+    std::swap(triangles[2][1], triangles[2][2]);
+    Soup soup = soup_of(tetra_positions(), triangles);
+    std::vector<std::string> repairs;
+    check_topology_and_orient(soup, true, "tetra", repairs);
+    EXPECT_TRUE(has_line(repairs, "reoriented 1 face to agree with their neighbours"))
+        << ::testing::PrintToString(repairs);
+    EXPECT_EQ(soup.triangles, tetra_triangles());
+  }
+  {  // a tetrahedron inside out
+    std::vector<Triangle3> triangles = tetra_triangles();
+    for (Triangle3& t : triangles) std::swap(t[1], t[2]);
+    Soup soup = soup_of(tetra_positions(), triangles);
+    std::vector<std::string> repairs;
+    check_topology_and_orient(soup, true, "tetra", repairs);
+    EXPECT_EQ(repairs,
+              std::vector<std::string>{"flipped 1 closed component that faced inwards (4 faces)"});
+    EXPECT_EQ(soup.triangles, tetra_triangles());
+  }
+}
+
 }  // namespace
 }  // namespace papercraft

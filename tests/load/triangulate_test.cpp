@@ -185,5 +185,56 @@ TEST_F(LoadOpenMeshTest, ATwistedQuadIsSplitAlongTheDiagonalThatFoldsLeast) {
   }
 }
 
+// Random simple polygons (star-shaped about a point, 3 to 12 corners, in random planes):
+// n - 2 triangles over the polygon's corners, whose areas sum to the polygon's and whose
+// normals all point the polygon's way.
+TEST(LoadTriangulate, TrianglesCoverThePolygonFacingItsWay) {
+  using load_internal::Vec3d;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int round = 0; round < 200; ++round) {
+    const int n = 3 + round % 10;
+    std::vector<double> angles;
+    for (int i = 0; i < n; ++i) angles.push_back(2 * M_PI * (i + 0.1 + 0.8 * unit(random)) / n);
+    // A random frame: the polygon's plane.
+    const Vec3d a = Vec3d(unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5).normalized();
+    Vec3d b = OpenMesh::cross(a, Vec3d(0.3, 0.7, -0.2));
+    b.normalize();
+    const Vec3d normal = OpenMesh::cross(a, b);
+    const Vec3d origin(unit(random), unit(random), unit(random));
+    load_internal::RawMesh raw;
+    std::vector<std::pair<double, double>> flat;
+    for (double angle : angles) {
+      const double r = 0.3 + unit(random);
+      flat.push_back({r * std::cos(angle), r * std::sin(angle)});
+      raw.positions.push_back(origin + a * flat.back().first + b * flat.back().second);
+      raw.corners.push_back(static_cast<int>(raw.corners.size()));
+    }
+    raw.face_start.push_back(raw.corners.size());
+    double area = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const auto& [x0, y0] = flat[i];
+      const auto& [x1, y1] = flat[(i + 1) % n];
+      area += 0.5 * (x0 * y1 - x1 * y0);
+    }
+    std::vector<std::string> repairs;
+    const load_internal::Soup soup = load_internal::triangulate(raw, false, {}, "polygon", repairs);
+    SCOPED_TRACE("round " + std::to_string(round) + ", " + std::to_string(n) + " corners");
+    ASSERT_EQ(soup.triangles.size(), static_cast<std::size_t>(n - 2));
+    double covered = 0.0;
+    for (const auto& t : soup.triangles) {
+      for (int v : t) {
+        EXPECT_GE(v, 0);
+        EXPECT_LT(v, n);
+      }
+      const Vec3d cross = OpenMesh::cross(soup.positions[t[1]] - soup.positions[t[0]],
+                                          soup.positions[t[2]] - soup.positions[t[0]]);
+      EXPECT_GT(OpenMesh::dot(cross, normal), 0.0) << "a triangle faces away from its polygon";
+      covered += 0.5 * cross.norm();
+    }
+    EXPECT_NEAR(covered, area, 1e-9 * area);
+  }
+}
+
 }  // namespace
 }  // namespace papercraft
