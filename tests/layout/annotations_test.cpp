@@ -161,7 +161,6 @@ TEST(LayoutPages, LabelInABentSlotGetsALeaderThatBends) {
   EXPECT_EQ(bent, 1);
 }
 
-
 // The crowded texts a layout's notes name: seam labels ("label X finds no spot") and piece
 // numbers ("piece N: no room for its number").
 std::set<std::string> crowded_texts(const PatternLayout& layout) {

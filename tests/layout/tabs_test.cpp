@@ -169,7 +169,6 @@ TEST(LayoutPages, ShortSeamGetsASteeperTab) {
   EXPECT_EQ(layout.stats.seams_without_tab, 0);
 }
 
-
 // Distance from p to the polyline `base`.
 double distance_to_polyline(const Vec2& p, const std::vector<Vec2>& base) {
   double nearest = std::numeric_limits<double>::infinity();

@@ -135,7 +135,7 @@ inline bool on_piece(const Vec2& p, const PlacedPiece& piece) {
 // on their piece (or beside it on no piece), no two labels overlapping, leaders crossing no
 // cut line or label, matching labels and one tab or joining strip per seam.
 inline void expect_valid_layout(const PatternLayout& layout, const std::vector<FlatStrip>& strips,
-                         const LayoutOptions& options) {
+                                const LayoutOptions& options) {
   const double x0 = options.margin_mm - kEps, y0 = options.margin_mm - kEps;
   const double x1 = options.page.width_mm - options.margin_mm + kEps;
   const double y1 = options.page.height_mm - options.margin_mm + kEps;
