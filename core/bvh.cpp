@@ -70,6 +70,62 @@ double Aabb::squared_distance(const Vec3& p) const {
   return sum;
 }
 
+namespace {
+
+// The split of items[begin, end) (their centroids bounded by `centroid_box`) along
+// `axis` by the surface area heuristic over `bin_count` bins: the items of the bins left of the
+// cheapest cut moved before the others, and the position of the first other; -1 where no cut
+// leaves items on both sides.
+int sah_split(std::vector<BuildItem>& items, int begin, int end, int axis, const Aabb& centroid_box,
+              int bin_count) {
+  const int count = end - begin;
+  const Vec3 extent = centroid_box.max - centroid_box.min;
+  struct Bin {
+    Aabb box;
+    int count = 0;
+  };
+  std::array<Bin, kMaxBins> bins{};
+  const double scale = bin_count / extent[axis];
+  auto bin_of = [&](const BuildItem& item) {
+    const int b = static_cast<int>((item.centroid[axis] - centroid_box.min[axis]) * scale);
+    return std::clamp(b, 0, bin_count - 1);
+  };
+  for (int i = begin; i < end; ++i) {
+    Bin& bin = bins[bin_of(items[i])];
+    bin.box.extend(items[i].box);
+    ++bin.count;
+  }
+  std::array<double, kMaxBins> right_cost{};
+  Aabb accumulated;
+  int accumulated_count = 0;
+  for (int b = bin_count - 1; b > 0; --b) {
+    accumulated.extend(bins[b].box);
+    accumulated_count += bins[b].count;
+    right_cost[b] = accumulated_count ? half_area(accumulated) * accumulated_count : 0.0;
+  }
+  accumulated = Aabb();
+  accumulated_count = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  int best_split = -1;
+  for (int b = 1; b < bin_count; ++b) {
+    accumulated.extend(bins[b - 1].box);
+    accumulated_count += bins[b - 1].count;
+    if (accumulated_count == 0 || accumulated_count == count) continue;
+    const double cost = half_area(accumulated) * accumulated_count + right_cost[b];
+    if (cost < best_cost) {
+      best_cost = cost;
+      best_split = b;
+    }
+  }
+  if (best_split <= 0) return -1;
+  BuildItem* split =
+      std::partition(items.data() + begin, items.data() + end,
+                     [&](const BuildItem& item) { return bin_of(item) < best_split; });
+  return static_cast<int>(split - items.data());
+}
+
+}  // namespace
+
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh, const TriangleBvhOptions& options)
     : mesh_(mesh) {
   build(options);
@@ -128,51 +184,8 @@ void TriangleBvh::build(const TriangleBvhOptions& options) {
 
     int middle = -1;
     if (count > leaf_size && extent[axis] > 0.0) {
-      if (task.depth < kSahDepth && half_area(box) > 0.0) {
-        struct Bin {
-          Aabb box;
-          int count = 0;
-        };
-        std::array<Bin, kMaxBins> bins{};
-        const double scale = bin_count / extent[axis];
-        auto bin_of = [&](const BuildItem& item) {
-          const int b = static_cast<int>((item.centroid[axis] - centroid_box.min[axis]) * scale);
-          return std::clamp(b, 0, bin_count - 1);
-        };
-        for (int i = task.begin; i < task.end; ++i) {
-          Bin& bin = bins[bin_of(items[i])];
-          bin.box.extend(items[i].box);
-          ++bin.count;
-        }
-        std::array<double, kMaxBins> right_cost{};
-        Aabb accumulated;
-        int accumulated_count = 0;
-        for (int b = bin_count - 1; b > 0; --b) {
-          accumulated.extend(bins[b].box);
-          accumulated_count += bins[b].count;
-          right_cost[b] = accumulated_count ? half_area(accumulated) * accumulated_count : 0.0;
-        }
-        accumulated = Aabb();
-        accumulated_count = 0;
-        double best_cost = std::numeric_limits<double>::infinity();
-        int best_split = -1;
-        for (int b = 1; b < bin_count; ++b) {
-          accumulated.extend(bins[b - 1].box);
-          accumulated_count += bins[b - 1].count;
-          if (accumulated_count == 0 || accumulated_count == count) continue;
-          const double cost = half_area(accumulated) * accumulated_count + right_cost[b];
-          if (cost < best_cost) {
-            best_cost = cost;
-            best_split = b;
-          }
-        }
-        if (best_split > 0) {
-          BuildItem* split =
-              std::partition(items.data() + task.begin, items.data() + task.end,
-                             [&](const BuildItem& item) { return bin_of(item) < best_split; });
-          middle = static_cast<int>(split - items.data());
-        }
-      }
+      if (task.depth < kSahDepth && half_area(box) > 0.0)
+        middle = sah_split(items, task.begin, task.end, axis, centroid_box, bin_count);
       if (middle <= task.begin || middle >= task.end) {
         middle = task.begin + count / 2;
         std::nth_element(items.begin() + task.begin, items.begin() + middle,
@@ -259,8 +272,8 @@ void TriangleBvh::build(const TriangleBvhOptions& options) {
       first = std::min(first, range[0]);
       last = std::max(last, range[0] + range[1]);
     }
-    node_slots_[i] = first <= last ? std::array<int, 2>{first, last - first}
-                                   : std::array<int, 2>{0, 0};
+    node_slots_[i] =
+        first <= last ? std::array<int, 2>{first, last - first} : std::array<int, 2>{0, 0};
   }
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // One row of a batch summary (batch.json, batch.jsonl and their shard and run variants;
-// README "Batch summaries"): what became of one input. Every text field holds valid UTF-8
-// (bytes of a file name that are not are escaped as \xNN), so a row always goes into JSON.
+// docs/outputs.md, "Run and batch summaries"): what became of one input. Every text field
+// holds valid UTF-8 (bytes of a file name that are not are escaped as \xNN), so a row always
+// goes into JSON.
 
 #include <filesystem>
 #include <nlohmann/json.hpp>

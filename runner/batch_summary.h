@@ -1,5 +1,5 @@
 #pragma once
-// A batch summary file (README "Batch summaries"): batch.json of a whole batch,
+// A batch summary file (docs/outputs.md, "Run and batch summaries"): batch.json of a whole batch,
 // batch.shard-I-of-N.json of one shard, run.json of `papercraft run`, each with its journal
 // (.jsonl: one row per line, appended as models finish). Each process writes only its own
 // pair, so shards sharing an output folder never write the same file.

@@ -122,6 +122,195 @@ int generate(const std::string& shape, const std::filesystem::path& out,
   return kExitOk;
 }
 
+// `papercraft run`: its options as parsed.
+struct RunCommand {
+  CLI::App* command = nullptr;
+  RunRequest request;
+  std::vector<std::string> inputs;
+  std::string tolerance_text, height_text, min_width_text;
+  double scale = 0.0, min_area = 0.0;
+  int max_pages = 0;
+  CLI::Option *scale_option = nullptr, *min_area_option = nullptr, *max_pages_option = nullptr;
+};
+
+void add_run_command(CLI::App& app, RunCommand& run_command) {
+  RunRequest& run_request = run_command.request;
+  auto* run = app.add_subcommand(
+      "run", "run the pipeline on mesh files (OBJ, OFF, PLY, STL, glTF/GLB, 3MF)");
+  run_command.command = run;
+  run->add_option("meshes", run_command.inputs, "input meshes")->required();
+  run->add_option("-c,--config", run_request.config_file, "pipeline YAML (default: builtin)");
+  run->add_option("-t,--tolerance", run_command.tolerance_text,
+                  "Hausdorff tolerance: 2% of the largest side, or absolute like 0.004");
+  run->add_option("-o,--out", run_request.output, "output folder (default: out)");
+  run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
+      ->check(number_at_least(0));
+  run->add_option("--grace", run_request.grace_seconds,
+                  "after SIGINT/SIGTERM, seconds the running models may take to finish before "
+                  "they are abandoned (default 10)")
+      ->check(number_at_least(0));
+  auto* height = run->add_option("--height", run_command.height_text,
+                                 "size of the model's largest side on paper: 200, 200mm, 20cm, "
+                                 "8in (a bare number is mm)");
+  run_command.scale_option =
+      run->add_option("--scale", run_command.scale, "mm on paper per model unit")
+          ->check(number_at_least(0, /*exclusive=*/true))
+          ->excludes(height);
+  run->add_option("--min-width", run_command.min_width_text,
+                  "no piece narrower than this on paper, but for its tips: 5, 5mm, 0.5cm "
+                  "(0: no bound; default 5 mm)");
+  run_command.min_area_option =
+      run->add_option("--min-area", run_command.min_area,
+                      "no piece smaller than this many mm^2 on paper (0: no bound; default 100)")
+          ->check(number_at_least(0));
+  run_command.max_pages_option =
+      run->add_option("--max-pages", run_command.max_pages,
+                      "refuse a model whose pattern would need more pages than this, estimated "
+                      "from its surface area at the print scale (default 100)")
+          ->check(number_at_least(1));
+  run->add_flag("--allow-large-tolerance", run_request.allow_large_tolerance,
+                "accept a tolerance above 50% of the model's largest side");
+}
+
+int run_command(RunCommand& run_command, ProgressDisplay& display) {
+  RunRequest& run_request = run_command.request;
+  for (const auto& input : run_command.inputs) run_request.inputs.emplace_back(input);
+  if (!run_command.tolerance_text.empty())
+    run_request.tolerance = parse_tolerance_option(run_command.tolerance_text);
+  if (!run_command.height_text.empty()) {
+    try {
+      run_request.height_mm = parse_length_mm(run_command.height_text);
+    } catch (const std::invalid_argument& e) {
+      throw InvalidInputException(std::string("--height: ") + e.what());
+    }
+  }
+  if (*run_command.scale_option) run_request.scale = run_command.scale;
+  if (!run_command.min_width_text.empty()) {
+    try {
+      run_request.min_width_mm =
+          run_command.min_width_text == "0" ? 0.0 : parse_length_mm(run_command.min_width_text);
+    } catch (const std::invalid_argument& e) {
+      throw InvalidInputException(std::string("--min-width: ") + e.what());
+    }
+  }
+  if (*run_command.min_area_option) run_request.min_area_mm2 = run_command.min_area;
+  if (*run_command.max_pages_option) run_request.max_pages = run_command.max_pages;
+  run_request.names = unique_model_names(run_request.inputs);
+  return run_models(run_request, display);
+}
+
+// `papercraft batch`: its options as parsed.
+struct BatchCommand {
+  CLI::App* command = nullptr;
+  std::string job_file, shard;
+  int threads = -1, max_pages = 0;
+  bool force = false, list = false, allow_large_tolerance = false;
+  double grace = 10.0;
+  CLI::Option* max_pages_option = nullptr;
+};
+
+void add_batch_command(CLI::App& app, BatchCommand& batch_command) {
+  auto* batch = app.add_subcommand("batch", "run a batch job file (YAML: inputs, output, ...)");
+  batch_command.command = batch;
+  batch->add_option("job", batch_command.job_file, "job YAML")->required();
+  batch->add_option("-j,--threads", batch_command.threads, "override the job's thread count")
+      ->check(number_at_least(0));
+  batch->add_option("--shard", batch_command.shard,
+                    "run shard I of N (like 2/4: inputs 2, 6, 10, ...); overrides the job's");
+  batch->add_flag("--force", batch_command.force,
+                  "run every model again, also those an earlier run finished with the same "
+                  "input and settings");
+  batch
+      ->add_option("--grace", batch_command.grace,
+                   "after SIGINT/SIGTERM, seconds the running models may take to finish "
+                   "before they are abandoned (default 10)")
+      ->check(number_at_least(0));
+  batch->add_flag("--list", batch_command.list,
+                  "print the models this shard would run (name, input file, output folder; "
+                  "tab-separated) and exit");
+  batch_command.max_pages_option =
+      batch
+          ->add_option("--max-pages", batch_command.max_pages,
+                       "refuse a model whose pattern would need more pages than this "
+                       "(default 100)")
+          ->check(number_at_least(1));
+  batch->add_flag("--allow-large-tolerance", batch_command.allow_large_tolerance,
+                  "accept a tolerance above 50% of a model's largest side");
+}
+
+int batch_command(const BatchCommand& batch, ProgressDisplay& display) {
+  const BatchJob job = load_batch_job(batch.job_file);
+  Shard shard{job.shard_index, job.shard_count};
+  if (!batch.shard.empty()) {
+    try {
+      shard = parse_shard(batch.shard);
+    } catch (const std::invalid_argument& e) {
+      throw InvalidInputException(std::string("--shard: ") + e.what());
+    }
+  }
+  RunRequest request;
+  request.kind = RunRequest::Kind::kBatch;
+  // Names over the whole job, so that shards never share an output folder.
+  const std::vector<std::string> names = unique_model_names(job.inputs);
+  for (const std::size_t i : shard_indices(job.inputs.size(), shard.index, shard.count)) {
+    request.inputs.push_back(job.inputs[i]);
+    request.names.push_back(names[i]);
+  }
+  request.shard_index = shard.index;
+  request.shard_count = shard.count;
+  if (job.config) request.config_file = job.config->string();
+  request.tolerance = job.tolerance;
+  request.output = job.output;
+  request.threads = batch.threads >= 0 ? batch.threads : job.threads.value_or(-1);
+  request.height_mm = job.height_mm;
+  request.min_width_mm = job.min_width_mm;
+  request.min_area_mm2 = job.min_area_mm2;
+  request.force = batch.force;
+  if (*batch.max_pages_option) request.max_pages = batch.max_pages;
+  request.allow_large_tolerance = batch.allow_large_tolerance;
+  request.grace_seconds = batch.grace;
+  if (batch.list) {
+    list_inputs(request);
+    return kExitOk;
+  }
+  if (shard.count > 1) {
+    spdlog::info("shard {}/{}: {} of {} inputs", shard.index + 1, shard.count,
+                 request.inputs.size(), job.inputs.size());
+  }
+  return run_models(request, display);
+}
+
+int validate_command(const std::string& validate_file) {
+  const PipelineConfig config = load_pipeline_config(validate_file, builtin_registry());
+  // Building each node checks what only the node knows (e.g. segment.fuzzy's alternatives).
+  const Pipeline pipeline(config, builtin_registry());
+  const NodeContext context{pipeline.refine_options()};
+  for (const auto& node : config.nodes) {
+    builtin_registry().find(node.impl)->create(node.params, context);
+  }
+  int back = 0;
+  for (const auto& e : config.edges) back += e.back ? 1 : 0;
+  std::cout << validate_file << ": ok (" << config.nodes.size() << " nodes, " << config.edges.size()
+            << " edges, " << back << " back edge(s))\n";
+  return kExitOk;
+}
+
+int generate_command(const std::string& shape, const std::filesystem::path& shape_out,
+                     const std::vector<std::string>& shape_params, bool list_shapes) {
+  if (list_shapes || shape.empty()) {
+    for (const auto& name : shape_names()) {
+      std::cout << name << "\n";
+      for (const auto& p : shape_parameters(name)) {
+        std::cout << "    " << p.name << " (default " << p.default_value << "): " << p.description
+                  << "\n";
+      }
+    }
+    return shape.empty() && !list_shapes ? kExitUsage : kExitOk;
+  }
+  if (shape_out.empty()) throw InvalidInputException("generate: missing the output file");
+  return generate(shape, shape_out, shape_params);
+}
+
 int main_impl(int argc, char** argv) {
   CLI::App app{"papercraft: certified developable-strip paper patterns from triangle meshes"};
   app.set_version_flag("--version", PAPERCRAFT_VERSION);
@@ -131,83 +320,10 @@ int main_impl(int argc, char** argv) {
   app.add_flag("-v,--verbose", common.verbose, "debug output on stderr");
   app.add_flag("-q,--quiet", common.quiet, "only warnings and errors on stderr");
 
-  RunRequest run_request;
-  std::vector<std::string> run_inputs;
-  auto* run = app.add_subcommand(
-      "run", "run the pipeline on mesh files (OBJ, OFF, PLY, STL, glTF/GLB, 3MF)");
-  run->add_option("meshes", run_inputs, "input meshes")->required();
-  run->add_option("-c,--config", run_request.config_file, "pipeline YAML (default: builtin)");
-  std::string tolerance_text;
-  run->add_option("-t,--tolerance", tolerance_text,
-                  "Hausdorff tolerance: 2% of the largest side, or absolute like 0.004");
-  run->add_option("-o,--out", run_request.output, "output folder (default: out)");
-  run->add_option("-j,--threads", run_request.threads, "worker threads, 0 = all cores")
-      ->check(number_at_least(0));
-  run->add_option("--grace", run_request.grace_seconds,
-                  "after SIGINT/SIGTERM, seconds the running models may take to finish before "
-                  "they are abandoned (default 10)")
-      ->check(number_at_least(0));
-  std::string height_text;
-  auto* height = run->add_option("--height", height_text,
-                                 "size of the model's largest side on paper: 200, 200mm, 20cm, "
-                                 "8in (a bare number is mm)");
-  double scale = 0.0;
-  auto* scale_option = run->add_option("--scale", scale, "mm on paper per model unit")
-                           ->check(number_at_least(0, /*exclusive=*/true))
-                           ->excludes(height);
-  std::string min_width_text;
-  run->add_option("--min-width", min_width_text,
-                  "no piece narrower than this on paper, but for its tips: 5, 5mm, 0.5cm "
-                  "(0: no bound; default 5 mm)");
-  double min_area = 0.0;
-  auto* min_area_option =
-      run->add_option("--min-area", min_area,
-                      "no piece smaller than this many mm^2 on paper (0: no bound; default 100)")
-          ->check(number_at_least(0));
-
-  int run_max_pages = 0;
-  auto* run_max_pages_option =
-      run->add_option("--max-pages", run_max_pages,
-                      "refuse a model whose pattern would need more pages than this, estimated "
-                      "from its surface area at the print scale (default 100)")
-          ->check(number_at_least(1));
-  run->add_flag("--allow-large-tolerance", run_request.allow_large_tolerance,
-                "accept a tolerance above 50% of the model's largest side");
-
-  std::string job_file;
-  auto* batch = app.add_subcommand("batch", "run a batch job file (YAML: inputs, output, ...)");
-  batch->add_option("job", job_file, "job YAML")->required();
-  int batch_threads = -1;
-  batch->add_option("-j,--threads", batch_threads, "override the job's thread count")
-      ->check(number_at_least(0));
-  std::string batch_shard;
-  batch->add_option("--shard", batch_shard,
-                    "run shard I of N (like 2/4: inputs 2, 6, 10, ...); overrides the job's");
-  bool batch_force = false;
-  batch->add_flag("--force", batch_force,
-                  "run every model again, also those an earlier run finished with the same "
-                  "input and settings");
-  double batch_grace = 10.0;
-  batch
-      ->add_option("--grace", batch_grace,
-                   "after SIGINT/SIGTERM, seconds the running models may take to finish "
-                   "before they are abandoned (default 10)")
-      ->check(number_at_least(0));
-  bool batch_list = false;
-  batch->add_flag("--list", batch_list,
-                  "print the models this shard would run (name, input file, output folder; "
-                  "tab-separated) and exit");
-
-  int batch_max_pages = 0;
-  auto* batch_max_pages_option =
-      batch
-          ->add_option("--max-pages", batch_max_pages,
-                       "refuse a model whose pattern would need more pages than this "
-                       "(default 100)")
-          ->check(number_at_least(1));
-  bool batch_allow_large_tolerance = false;
-  batch->add_flag("--allow-large-tolerance", batch_allow_large_tolerance,
-                  "accept a tolerance above 50% of a model's largest side");
+  RunCommand run;
+  add_run_command(app, run);
+  BatchCommand batch;
+  add_batch_command(app, batch);
 
   std::filesystem::path summary_dir;
   auto* summary = app.add_subcommand(
@@ -237,78 +353,16 @@ int main_impl(int argc, char** argv) {
     return app.exit(e) == 0 ? kExitOk : kExitUsage;
   }
   // Before any thread exists: SIGINT/SIGTERM are then taken by run_models' own thread.
-  if (*run || *batch) block_stop_signals();
+  if (*run.command || *batch.command) block_stop_signals();
   ProgressDisplay display(
-      {.enabled = !common.quiet && !batch_list, .terminal = ::isatty(STDERR_FILENO) == 1});
+      {.enabled = !common.quiet && !batch.list, .terminal = ::isatty(STDERR_FILENO) == 1});
   setup_logging(common, display);
   omlog().disable();  // OpenMesh's chatter ("[OBJWriter] : write file"); errors come as ours
   omout().disable();
 
   try {
-    if (*run) {
-      for (const auto& input : run_inputs) run_request.inputs.emplace_back(input);
-      if (!tolerance_text.empty()) run_request.tolerance = parse_tolerance_option(tolerance_text);
-      if (!height_text.empty()) {
-        try {
-          run_request.height_mm = parse_length_mm(height_text);
-        } catch (const std::invalid_argument& e) {
-          throw InvalidInputException(std::string("--height: ") + e.what());
-        }
-      }
-      if (*scale_option) run_request.scale = scale;
-      if (!min_width_text.empty()) {
-        try {
-          run_request.min_width_mm = min_width_text == "0" ? 0.0 : parse_length_mm(min_width_text);
-        } catch (const std::invalid_argument& e) {
-          throw InvalidInputException(std::string("--min-width: ") + e.what());
-        }
-      }
-      if (*min_area_option) run_request.min_area_mm2 = min_area;
-      if (*run_max_pages_option) run_request.max_pages = run_max_pages;
-      run_request.names = unique_model_names(run_request.inputs);
-      return run_models(run_request, display);
-    }
-    if (*batch) {
-      const BatchJob job = load_batch_job(job_file);
-      Shard shard{job.shard_index, job.shard_count};
-      if (!batch_shard.empty()) {
-        try {
-          shard = parse_shard(batch_shard);
-        } catch (const std::invalid_argument& e) {
-          throw InvalidInputException(std::string("--shard: ") + e.what());
-        }
-      }
-      RunRequest request;
-      request.kind = RunRequest::Kind::kBatch;
-      // Names over the whole job, so that shards never share an output folder.
-      const std::vector<std::string> names = unique_model_names(job.inputs);
-      for (const std::size_t i : shard_indices(job.inputs.size(), shard.index, shard.count)) {
-        request.inputs.push_back(job.inputs[i]);
-        request.names.push_back(names[i]);
-      }
-      request.shard_index = shard.index;
-      request.shard_count = shard.count;
-      if (job.config) request.config_file = job.config->string();
-      request.tolerance = job.tolerance;
-      request.output = job.output;
-      request.threads = batch_threads >= 0 ? batch_threads : job.threads.value_or(-1);
-      request.height_mm = job.height_mm;
-      request.min_width_mm = job.min_width_mm;
-      request.min_area_mm2 = job.min_area_mm2;
-      request.force = batch_force;
-      if (*batch_max_pages_option) request.max_pages = batch_max_pages;
-      request.allow_large_tolerance = batch_allow_large_tolerance;
-      request.grace_seconds = batch_grace;
-      if (batch_list) {
-        list_inputs(request);
-        return kExitOk;
-      }
-      if (shard.count > 1) {
-        spdlog::info("shard {}/{}: {} of {} inputs", shard.index + 1, shard.count,
-                     request.inputs.size(), job.inputs.size());
-      }
-      return run_models(request, display);
-    }
+    if (*run.command) return run_command(run, display);
+    if (*batch.command) return batch_command(batch, display);
     if (*summary) {
       const std::string extension = summary_dir.extension().string();
       std::error_code unreadable;
@@ -320,34 +374,8 @@ int main_impl(int argc, char** argv) {
       print_nodes(builtin_registry());
       return kExitOk;
     }
-    if (*validate) {
-      const PipelineConfig config = load_pipeline_config(validate_file, builtin_registry());
-      // Building each node checks what only the node knows (e.g. segment.fuzzy's alternatives).
-      const Pipeline pipeline(config, builtin_registry());
-      const NodeContext context{pipeline.refine_options()};
-      for (const auto& node : config.nodes) {
-        builtin_registry().find(node.impl)->create(node.params, context);
-      }
-      int back = 0;
-      for (const auto& e : config.edges) back += e.back ? 1 : 0;
-      std::cout << validate_file << ": ok (" << config.nodes.size() << " nodes, "
-                << config.edges.size() << " edges, " << back << " back edge(s))\n";
-      return kExitOk;
-    }
-    if (*gen) {
-      if (list_shapes || shape.empty()) {
-        for (const auto& name : shape_names()) {
-          std::cout << name << "\n";
-          for (const auto& p : shape_parameters(name)) {
-            std::cout << "    " << p.name << " (default " << p.default_value
-                      << "): " << p.description << "\n";
-          }
-        }
-        return shape.empty() && !list_shapes ? kExitUsage : kExitOk;
-      }
-      if (shape_out.empty()) throw InvalidInputException("generate: missing the output file");
-      return generate(shape, shape_out, shape_params);
-    }
+    if (*validate) return validate_command(validate_file);
+    if (*gen) return generate_command(shape, shape_out, shape_params, list_shapes);
   } catch (const ConfigException& e) {
     spdlog::error("{}", printable_utf8(e.what()));
     return kExitUsage;

@@ -1,6 +1,7 @@
 #pragma once
-// Progress of a run on stderr (README "Progress"): on a terminal one line redrawn in place,
-// which log messages and result lines print above; otherwise a plain line every few seconds.
+// Progress of a run on stderr (docs/batches.md, "Progress"): on a terminal one line redrawn in
+// place, which log messages and result lines print above; otherwise a plain line every few
+// seconds.
 
 #include <spdlog/sinks/sink.h>
 

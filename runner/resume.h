@@ -1,5 +1,5 @@
 #pragma once
-// Resuming a batch (README "Resuming"): each model that finishes ok gets
+// Resuming a batch (docs/batches.md, "Resuming"): each model that finishes ok gets
 // <out>/<name>/finished.json, written after all its other files, holding its batch row and
 // the key of its result: the input's content hash, the config's hash, the tolerance, the
 // paper settings and the version. A later batch skips the model while the key is the same.

@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM as requests to stop a run (README "Stopping a run"): the first stops
+// SIGINT and SIGTERM as requests to stop a run (docs/batches.md, "Nothing lost"): the first stops
 // starting models and gives the running ones a grace period; then (or at a second signal)
 // they are abandoned; a run whose node calls do not return soon after is ended by a hard
 // exit that still writes the summary. The signals are taken by a thread of our own

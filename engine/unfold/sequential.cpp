@@ -276,16 +276,24 @@ void weld_repeated_points(FlatStrip& flat, double reach) {
   flat = std::move(welded);
 }
 
-}  // namespace
+// The strip's dual graph: which triangles are usable (three distinct corners), the triangle
+// across each edge, and for a closed strip the shortest ruling it is opened along (its dual
+// link cut); with the sum and count of the usable triangles' edge lengths.
+struct StripDual {
+  std::vector<bool> usable;
+  std::vector<std::array<int, 3>> neighbour;  // neighbour[t][i]: across edge (t[i], t[i+1])
+  std::pair<int, int> opened{-1, -1};         // the ruling a closed strip is opened along
+  double edge_length_sum = 0.0;
+  int edge_count = 0;
+};
 
-std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id, int first_flat_id,
-                                    const UnfoldOptions& options) {
-  validate(strip, options);
+StripDual strip_dual(const RuledStrip& strip, const UnfoldOptions& options) {
   const auto& vertices = strip.mesh.vertices;
   const auto& triangles = strip.mesh.triangles;
   const int triangle_count = static_cast<int>(triangles.size());
-
-  std::vector<bool> usable(triangle_count);
+  StripDual dual;
+  std::vector<bool>& usable = dual.usable;
+  usable.resize(triangle_count);
   for (int t = 0; t < triangle_count; ++t) {
     const Triangle& tri = triangles[t];
     usable[t] = tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0];
@@ -293,8 +301,8 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
 
   // Dual graph: neighbour[t][i] is the triangle across edge (t[i], t[i+1]).
   std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> edge_faces;
-  double edge_length_sum = 0.0;
-  int edge_count = 0;
+  double& edge_length_sum = dual.edge_length_sum;
+  int& edge_count = dual.edge_count;
   for (int t = 0; t < triangle_count; ++t) {
     if (!usable[t]) continue;
     for (int i = 0; i < 3; ++i) {
@@ -304,7 +312,8 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
       ++edge_count;
     }
   }
-  std::vector<std::array<int, 3>> neighbour(triangle_count, {-1, -1, -1});
+  std::vector<std::array<int, 3>>& neighbour = dual.neighbour;
+  neighbour.assign(triangle_count, {-1, -1, -1});
   std::vector<std::pair<int, int>> dual_edges;  // keys of edges with a dual link
   for (const auto& [key, faces] : edge_faces) {
     if (faces.size() != 2) continue;
@@ -319,7 +328,7 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
   // Open a closed strip along its shortest ruling (an edge joining A and B).
   const bool closed = (strip.a_closed && (strip.b_closed || strip.b_count == 1)) ||
                       (strip.b_closed && strip.a_count == 1);
-  std::pair<int, int> opened{-1, -1};  // the ruling a closed strip is opened along
+  std::pair<int, int>& opened = dual.opened;
   if (closed) {
     double shortest = std::numeric_limits<double>::infinity();
     for (const auto& [u, v] : dual_edges)
@@ -334,6 +343,24 @@ std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id
       break;
     }
   }
+  return dual;
+}
+
+}  // namespace
+
+std::vector<FlatStrip> unfold_strip(const RuledStrip& strip, int source_strip_id, int first_flat_id,
+                                    const UnfoldOptions& options) {
+  validate(strip, options);
+  const auto& vertices = strip.mesh.vertices;
+  const auto& triangles = strip.mesh.triangles;
+  const int triangle_count = static_cast<int>(triangles.size());
+
+  StripDual dual = strip_dual(strip, options);
+  const std::vector<bool>& usable = dual.usable;
+  std::vector<std::array<int, 3>>& neighbour = dual.neighbour;
+  const std::pair<int, int> opened = dual.opened;
+  const double edge_length_sum = dual.edge_length_sum;
+  const int edge_count = dual.edge_count;
 
   const double mean_edge = edge_count > 0 ? edge_length_sum / edge_count : 0.0;
   const double cell_size = mean_edge > 0.0 ? mean_edge : 1.0;

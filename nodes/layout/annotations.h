@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/pattern.h"
-#include "nodes/layout/pages.h"
+#include "nodes/layout/layout_types.h"
 #include "nodes/layout/pieces.h"
 #include "nodes/layout/polygon_2d.h"
 #include "nodes/layout/seam_pairing.h"

@@ -12,6 +12,7 @@
 
 #include "core/errors.h"
 #include "nodes/layout/format_mm.h"
+#include "nodes/layout/pages.h"
 #include "nodes/layout/polygon_2d.h"
 
 namespace papercraft::layout_internal {

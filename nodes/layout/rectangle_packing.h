@@ -1,10 +1,10 @@
 #pragma once
 // Packing rectangles onto as few pages as possible: next-fit decreasing height shelves and
-// maximal rectangles (the rectangle packing behind pack_rectangles in pages.h).
+// maximal rectangles (the rectangle packing behind pack_rectangles, declared in pages.h).
 
 #include <vector>
 
-#include "nodes/layout/pages.h"
+#include "nodes/layout/layout_types.h"
 
 namespace papercraft::layout_internal {
 

@@ -126,6 +126,101 @@ double box_area(const StripData& data, const std::vector<int>& set) {
   return tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused).size.prod();
 }
 
+// A piece of `set` fits width x height in its tightest orientation: one that fits only
+// diagonally would take a page to itself.
+bool piece_fits(const StripData& data, const std::vector<int>& set, double width, double height) {
+  bool unused = false;
+  const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
+  return fits_area(box.size, width, height);
+}
+
+// A divided set (StripData::divided) across the long axis of its tightest rectangle: a straight
+// cut where the divided triangles have edges across it, a short zigzag where not. True where it
+// cut the set (its parts into `work`, a band that fits into `done`); else `order`, `distance`
+// and `clean` (a cut may be made before order[i]) are set for the search of split_to_fit.
+bool cut_across_divided(StripData& data, const std::vector<int>& set, double width, double height,
+                        std::set<std::string>& used_labels, std::vector<std::vector<int>>& work,
+                        std::vector<std::vector<int>>& done, std::vector<int>& order,
+                        std::vector<double>& distance, std::vector<char>& clean) {
+  auto fits = [&](const std::vector<int>& part) { return piece_fits(data, part, width, height); };
+  // Across the long axis of the set's tightest rectangle: a straight cut where the
+  // divided triangles have edges across it, a short zigzag where not.
+  bool unused = false;
+  const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
+  // Wider than the page is long: first cut along the long axis into slabs that are not.
+  const double longest = std::max(width, height);
+  const bool slabs = box.size.y() > longest;
+  const Vec2 axis = slabs ? Vec2(-std::sin(box.angle), std::cos(box.angle))
+                          : Vec2(std::cos(box.angle), std::sin(box.angle));
+  // By the farthest corner along the axis (then the centroid): the two triangles of a
+  // grid cell come together, and a cut is made only between triangles whose farthest
+  // corners differ, so it runs along the cells' edges, not through their diagonals.
+  std::vector<std::tuple<double, double, int>> along;
+  double start = std::numeric_limits<double>::infinity();
+  for (int t : set) {
+    const Triangle& tri = data.strip->triangles[t];
+    double farthest = -std::numeric_limits<double>::infinity(), centroid = 0;
+    for (int k = 0; k < 3; ++k) {
+      farthest = std::max(farthest, axis.dot(data.points[tri[k]]));
+      centroid += axis.dot(data.points[tri[k]]) / 3.0;
+      start = std::min(start, axis.dot(data.points[tri[k]]));
+    }
+    along.push_back({farthest, centroid, t});
+  }
+  std::sort(along.begin(), along.end());
+  for (std::size_t i = 0; i < along.size(); ++i) {
+    order.push_back(std::get<2>(along[i]));
+    distance.push_back(std::get<0>(along[i]) - std::get<0>(along.front()));
+    clean.push_back(i == 0 || std::get<0>(along[i]) > std::get<0>(along[i - 1]) + 1e-6);
+  }
+  if (slabs) {
+    // The first of k equal slabs (k as few as keep each within the page's long side),
+    // cut at the first clean position past it; it and the rest are split again.
+    const double wide = box.size.y();
+    const double slab = wide / std::ceil(wide / longest);
+    std::size_t cut = 1;
+    while (cut < order.size() &&
+           !(clean[cut] && std::get<0>(along[cut - 1]) - start >= slab - 1e-6))
+      ++cut;
+    if (cut < order.size()) {
+      std::vector<int> head(order.begin(), order.begin() + cut);
+      cut_off(data, set, head, used_labels, work);
+      std::sort(head.begin(), head.end());
+      for (std::vector<int>& part : components(data, head)) work.push_back(std::move(part));
+      return true;
+    }
+  } else {
+    // Straight to the cut: k equal bands, each as long as the page allows for the set's
+    // width (its long side where the width fits the short one), the first cut at the clean
+    // position nearest 1/k of the length within that; kept where the band fits (a set
+    // bent across the axis goes on to the search below).
+    const double shortest = std::min(width, height);
+    const double allowed = box.size.y() <= shortest ? longest : shortest;
+    const double length = box.size.x();
+    const double target = length / std::ceil(length / allowed);
+    std::size_t best = 0;
+    for (std::size_t cut = 1; cut < order.size(); ++cut) {
+      if (!clean[cut]) continue;
+      const double reach = std::get<0>(along[cut - 1]) - start;
+      if (reach > allowed) break;
+      if (best == 0 ||
+          std::abs(reach - target) < std::abs(std::get<0>(along[best - 1]) - start - target))
+        best = cut;
+    }
+    if (best > 0) {
+      std::vector<int> head(order.begin(), order.begin() + best);
+      std::sort(head.begin(), head.end());
+      auto parts = components(data, head);
+      if (parts.size() == 1 && fits(head)) {
+        cut_off(data, set, head, used_labels, work);
+        done.push_back(std::move(head));
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> split_to_fit(StripData& data, double width, double height,
@@ -144,13 +239,7 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
                                            std::set<std::string>& used_labels) {
   std::vector<std::vector<int>> done;
   std::vector<std::vector<int>> work = components(data, triangles);
-  // A piece must fit in its tightest orientation: one that fits only diagonally would take
-  // a page to itself.
-  auto fits = [&](const std::vector<int>& set) {
-    bool unused = false;
-    const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
-    return fits_area(box.size, width, height);
-  };
+  auto fits = [&](const std::vector<int>& part) { return piece_fits(data, part, width, height); };
   while (!work.empty()) {
     std::vector<int> set = std::move(work.front());
     work.erase(work.begin());
@@ -162,81 +251,9 @@ std::vector<std::vector<int>> split_to_fit(StripData& data, const std::vector<in
     std::vector<int> order;
     std::vector<char> clean;  // divided: a cut may be made before order[i]
     if (data.divided) {
-      // Across the long axis of the set's tightest rectangle: a straight cut where the
-      // divided triangles have edges across it, a short zigzag where not.
-      bool unused = false;
-      const OrientedBox box = tightest_box(convex_hull(piece_points(data, set)), -1, -1, &unused);
-      // Wider than the page is long: first cut along the long axis into slabs that are not.
-      const double longest = std::max(width, height);
-      const bool slabs = box.size.y() > longest;
-      const Vec2 axis = slabs ? Vec2(-std::sin(box.angle), std::cos(box.angle))
-                              : Vec2(std::cos(box.angle), std::sin(box.angle));
-      // By the farthest corner along the axis (then the centroid): the two triangles of a
-      // grid cell come together, and a cut is made only between triangles whose farthest
-      // corners differ, so it runs along the cells' edges, not through their diagonals.
-      std::vector<std::tuple<double, double, int>> along;
-      double start = std::numeric_limits<double>::infinity();
-      for (int t : set) {
-        const Triangle& tri = data.strip->triangles[t];
-        double farthest = -std::numeric_limits<double>::infinity(), centroid = 0;
-        for (int k = 0; k < 3; ++k) {
-          farthest = std::max(farthest, axis.dot(data.points[tri[k]]));
-          centroid += axis.dot(data.points[tri[k]]) / 3.0;
-          start = std::min(start, axis.dot(data.points[tri[k]]));
-        }
-        along.push_back({farthest, centroid, t});
-      }
-      std::sort(along.begin(), along.end());
-      for (std::size_t i = 0; i < along.size(); ++i) {
-        order.push_back(std::get<2>(along[i]));
-        distance.push_back(std::get<0>(along[i]) - std::get<0>(along.front()));
-        clean.push_back(i == 0 || std::get<0>(along[i]) > std::get<0>(along[i - 1]) + 1e-6);
-      }
-      if (slabs) {
-        // The first of k equal slabs (k as few as keep each within the page's long side),
-        // cut at the first clean position past it; it and the rest are split again.
-        const double wide = box.size.y();
-        const double slab = wide / std::ceil(wide / longest);
-        std::size_t cut = 1;
-        while (cut < order.size() &&
-               !(clean[cut] && std::get<0>(along[cut - 1]) - start >= slab - 1e-6))
-          ++cut;
-        if (cut < order.size()) {
-          std::vector<int> head(order.begin(), order.begin() + cut);
-          cut_off(data, set, head, used_labels, work);
-          std::sort(head.begin(), head.end());
-          for (std::vector<int>& part : components(data, head)) work.push_back(std::move(part));
-          continue;
-        }
-      } else {
-        // Straight to the cut: k equal bands, each as long as the page allows for the set's
-        // width (its long side where the width fits the short one), the first cut at the clean
-        // position nearest 1/k of the length within that; kept where the band fits (a set
-        // bent across the axis goes on to the search below).
-        const double shortest = std::min(width, height);
-        const double allowed = box.size.y() <= shortest ? longest : shortest;
-        const double length = box.size.x();
-        const double target = length / std::ceil(length / allowed);
-        std::size_t best = 0;
-        for (std::size_t cut = 1; cut < order.size(); ++cut) {
-          if (!clean[cut]) continue;
-          const double reach = std::get<0>(along[cut - 1]) - start;
-          if (reach > allowed) break;
-          if (best == 0 ||
-              std::abs(reach - target) < std::abs(std::get<0>(along[best - 1]) - start - target))
-            best = cut;
-        }
-        if (best > 0) {
-          std::vector<int> head(order.begin(), order.begin() + best);
-          std::sort(head.begin(), head.end());
-          auto parts = components(data, head);
-          if (parts.size() == 1 && fits(head)) {
-            cut_off(data, set, head, used_labels, work);
-            done.push_back(std::move(head));
-            continue;
-          }
-        }
-      }
+      if (cut_across_divided(data, set, width, height, used_labels, work, done, order, distance,
+                             clean))
+        continue;
     } else {
       std::vector<int> from_first = dijkstra_order(data, set, set.front());
       order = dijkstra_order(data, set, from_first.back(), &distance);

@@ -1,10 +1,10 @@
 #pragma once
-// Which side of each seam takes its glue tab: the layout's TabStyle (pages.h).
+// Which side of each seam takes its glue tab: the layout's TabStyle (layout_types.h).
 
 #include <string>
 #include <vector>
 
-#include "nodes/layout/pages.h"
+#include "nodes/layout/layout_types.h"
 #include "nodes/layout/pieces.h"
 #include "nodes/layout/seam_pairing.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "nodes/layout/pages.h"
+#include "nodes/layout/layout_types.h"
 #include "nodes/layout/piece_shapes.h"
 #include "nodes/layout/pieces.h"
 #include "nodes/layout/seam_pairing.h"

@@ -144,11 +144,10 @@ SurfaceAppearance mesh_appearance(RawAppearance raw, const Soup& soup, bool with
   return a;
 }
 
-LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptions& options,
-                              const std::string& file, const std::filesystem::path& path) {
-  LoadedMesh loaded;
-  loaded.input_vertices = scan.vertices;
-  loaded.input_faces = scan.faces;
+// The counts OpenMesh's reader (or the pre-scan) returned against the file's, and the notes
+// on faces it dropped and STL corners it merged.
+void check_reader_counts(const RawMesh& raw, const Prescan& scan, const std::string& file,
+                         std::vector<std::string>& repairs) {
   const bool vertices_match = scan.format == Format::stl ? raw.positions.size() <= scan.vertices
                                                          : raw.positions.size() == scan.vertices;
   // OpenMesh's readers drop faces of no area: an STL triangle two of whose corners coincide, an
@@ -162,39 +161,40 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
                        " corners): it misread the file");
   }
   if (scan.dropped_faces > 0) {
-    loaded.repairs.push_back("removed " +
-                             (scan.format == Format::stl
-                                  ? counted(scan.dropped_faces, "triangle", "triangles") +
-                                        " two of whose corners coincide (no area)"
-                                  : counted(scan.dropped_faces, "face", "faces") +
-                                        " of fewer than 3 distinct vertices (no area)"));
+    repairs.push_back("removed " + (scan.format == Format::stl
+                                        ? counted(scan.dropped_faces, "triangle", "triangles") +
+                                              " two of whose corners coincide (no area)"
+                                        : counted(scan.dropped_faces, "face", "faces") +
+                                              " of fewer than 3 distinct vertices (no area)"));
   }
   if (scan.format == Format::stl && raw.positions.size() < scan.vertices) {
-    loaded.repairs.push_back("merged " +
-                             counted(scan.vertices - raw.positions.size(),
-                                     "exactly duplicate vertex", "exactly duplicate vertices") +
-                             " (an STL stores every triangle corner separately)");
+    repairs.push_back("merged " +
+                      counted(scan.vertices - raw.positions.size(), "exactly duplicate vertex",
+                              "exactly duplicate vertices") +
+                      " (an STL stores every triangle corner separately)");
   }
-  check_raw_faces(raw, file, options.repair);
+}
 
-  // Texture coordinates: per corner (OBJ) when every face has them, else per vertex (PLY, OFF)
-  // when every vertex has them.
+// Texture coordinates: per corner (OBJ) when every face has them, else per vertex (PLY, OFF)
+// when every vertex has them (copied to the corners); a note where some lack them. Whether the
+// mesh keeps them.
+bool choose_texture_coordinates(RawMesh& raw, const Prescan& scan,
+                                std::vector<std::string>& repairs) {
   const std::size_t faces_with_uv =
       static_cast<std::size_t>(std::count(raw.face_has_uv.begin(), raw.face_has_uv.end(), 1));
   const std::size_t vertices_with_uv =
       static_cast<std::size_t>(std::count(raw.vertex_has_uv.begin(), raw.vertex_has_uv.end(), 1));
   bool with_uvs = false;
   if (scan.off_face_extras > 0) {
-    loaded.repairs.push_back("ignored the values after the vertex indices of " +
-                             counted(scan.off_face_extras, "face", "faces") +
-                             " (face colors need a COFF header)");
+    repairs.push_back("ignored the values after the vertex indices of " +
+                      counted(scan.off_face_extras, "face", "faces") +
+                      " (face colors need a COFF header)");
   }
   if (faces_with_uv > 0) {
     with_uvs = faces_with_uv == raw.n_faces();
     if (!with_uvs) {
-      loaded.repairs.push_back("ignored texture coordinates: only " +
-                               std::to_string(faces_with_uv) + " of " +
-                               counted(raw.n_faces(), "face has", "faces have") + " them");
+      repairs.push_back("ignored texture coordinates: only " + std::to_string(faces_with_uv) +
+                        " of " + counted(raw.n_faces(), "face has", "faces have") + " them");
     }
   } else if (vertices_with_uv > 0) {
     with_uvs = vertices_with_uv == raw.positions.size();
@@ -204,21 +204,22 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
         raw.corner_uv[c] = raw.vertex_uv[raw.corners[c]];
       }
     } else {
-      loaded.repairs.push_back(
-          "ignored texture coordinates: only " + std::to_string(vertices_with_uv) + " of " +
-          counted(raw.positions.size(), "vertex has", "vertices have") + " them");
+      repairs.push_back("ignored texture coordinates: only " + std::to_string(vertices_with_uv) +
+                        " of " + counted(raw.positions.size(), "vertex has", "vertices have") +
+                        " them");
     }
   }
-  loaded.texture_path = texture_of(raw, scan, path);
-  RawAppearance appearance = raw_appearance(raw, scan, path);
+  return with_uvs;
+}
 
-  Soup soup = triangulate(raw, with_uvs, options, file, loaded.repairs);
-  raw = RawMesh();
-
+// The safe repairs of the soup where options.repair asks for them (each noted in `repairs`),
+// and the checks that refuse what is left.
+void repair_and_check_soup(Soup& soup, const LoadOptions& options, const std::string& file,
+                           std::vector<std::string>& repairs) {
   if (options.repair) {
     if (const std::size_t removed = remove_unreferenced_vertices(soup); removed > 0) {
-      loaded.repairs.push_back("removed " +
-                               counted(removed, "unreferenced vertex", "unreferenced vertices"));
+      repairs.push_back("removed " +
+                        counted(removed, "unreferenced vertex", "unreferenced vertices"));
     }
     const double epsilon = std::max(0.0, options.duplicate_vertex_epsilon);
     if (const std::size_t merged = merge_duplicate_vertices(soup, epsilon); merged > 0) {
@@ -227,19 +228,19 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
            << counted(merged, epsilon > 0.0 ? "duplicate vertex" : "exactly duplicate vertex",
                       epsilon > 0.0 ? "duplicate vertices" : "exactly duplicate vertices");
       if (epsilon > 0.0) what << " (within " << epsilon << ")";
-      loaded.repairs.push_back(what.str());
+      repairs.push_back(what.str());
     }
   }
   if (options.repair) {
     const DegenerateFaces degenerate =
         heal_degenerate_triangles(soup, options.degenerate_area_ratio);
     if (degenerate.collapsed > 0) {
-      loaded.repairs.push_back(
+      repairs.push_back(
           "removed " + counted(degenerate.collapsed, "face", "faces") +
           " with a corner repeated (in the file, or once duplicate vertices were merged)");
     }
     if (degenerate.flat > 0) {
-      loaded.repairs.push_back(
+      repairs.push_back(
           "removed " + counted(degenerate.flat, "zero-area face", "zero-area faces") +
           " (corners on one line), each face across its longest edge split at its middle corner");
     }
@@ -248,17 +249,17 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
   if (options.repair) {
     const DuplicateFaces duplicates = remove_duplicate_triangles(soup);
     if (duplicates.copies > 0) {
-      loaded.repairs.push_back("removed " +
-                               counted(duplicates.copies, "duplicate face", "duplicate faces") +
-                               " (the same vertices as another face, facing the same way)");
+      repairs.push_back("removed " +
+                        counted(duplicates.copies, "duplicate face", "duplicate faces") +
+                        " (the same vertices as another face, facing the same way)");
     }
     if (duplicates.folds > 0) {
-      loaded.repairs.push_back("removed " + counted(duplicates.folds, "pair", "pairs") +
-                               " of faces on the same vertices facing opposite ways (a flap "
-                               "folded flat onto itself)");
+      repairs.push_back("removed " + counted(duplicates.folds, "pair", "pairs") +
+                        " of faces on the same vertices facing opposite ways (a flap "
+                        "folded flat onto itself)");
     }
     if (duplicates.other_sides > 0) {
-      loaded.repairs.push_back(
+      repairs.push_back(
           "kept one side of a two-sided surface (every face written once facing each way): "
           "removed " +
           counted(duplicates.other_sides, "face", "faces"));
@@ -269,13 +270,64 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
                     "merged into one another or on one line)");
     }
     if (const std::size_t removed = remove_unreferenced_vertices(soup); removed > 0) {
-      loaded.repairs.push_back("removed " + counted(removed, "vertex", "vertices") +
-                               " used only by the faces removed");
+      repairs.push_back("removed " + counted(removed, "vertex", "vertices") +
+                        " used only by the faces removed");
     }
   }
   check_duplicate_triangles(soup, file);
-  check_topology_and_orient(soup, options.repair, file, loaded.repairs);
+  check_topology_and_orient(soup, options.repair, file, repairs);
+}
 
+// The soup's corner texture coordinates on the mesh: per vertex, and per halfedge where a
+// vertex has more than one (a UV seam).
+void set_texture_coordinates(const Soup& soup, const std::vector<Mesh::VertexHandle>& handles,
+                             LoadedMesh& loaded) {
+  Mesh& mesh = loaded.mesh;
+  const std::size_t vertices = soup.positions.size();
+  loaded.has_uvs = true;
+  mesh.request_vertex_texcoords2D();
+  std::vector<char> assigned(vertices, 0);
+  std::vector<char> seam(vertices, 0);
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int v = soup.triangles[t][k];
+      const Vec2d& uv = soup.corner_uv[t][k];
+      if (!assigned[v]) {
+        mesh.set_texcoord2D(handles[v], uv);
+        assigned[v] = 1;
+      } else if (mesh.texcoord2D(handles[v]) != uv) {
+        seam[v] = 1;
+      }
+    }
+  }
+  loaded.uv_seam_vertices = static_cast<std::size_t>(std::count(seam.begin(), seam.end(), 1));
+  if (loaded.uv_seam_vertices > 0) {
+    mesh.request_halfedge_texcoords2D();
+    for (auto f : mesh.faces()) {
+      const Triangle3& tri = soup.triangles[f.idx()];
+      for (auto h : f.halfedges()) {
+        mesh.set_texcoord2D(h, soup.corner_uv[f.idx()][corner_of(tri, h.to().idx())]);
+      }
+    }
+  }
+}
+
+LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptions& options,
+                              const std::string& file, const std::filesystem::path& path) {
+  LoadedMesh loaded;
+  loaded.input_vertices = scan.vertices;
+  loaded.input_faces = scan.faces;
+  check_reader_counts(raw, scan, file, loaded.repairs);
+  check_raw_faces(raw, file, options.repair);
+
+  const bool with_uvs = choose_texture_coordinates(raw, scan, loaded.repairs);
+  loaded.texture_path = texture_of(raw, scan, path);
+  RawAppearance appearance = raw_appearance(raw, scan, path);
+
+  Soup soup = triangulate(raw, with_uvs, options, file, loaded.repairs);
+  raw = RawMesh();
+
+  repair_and_check_soup(soup, options, file, loaded.repairs);
   Mesh& mesh = loaded.mesh;
   const std::size_t vertices = soup.positions.size();
   mesh.reserve(vertices, soup.triangles.size() * 3 / 2 + 3, soup.triangles.size());
@@ -294,34 +346,7 @@ LoadedMesh validate_and_build(RawMesh& raw, const Prescan& scan, const LoadOptio
       OpenMesh::getOrMakeProperty<OpenMesh::VertexHandle, int>(mesh, kInputVertexProperty);
   for (auto v : mesh.vertices()) input_vertex[v] = soup.source_vertex[v.idx()];
 
-  if (with_uvs) {
-    loaded.has_uvs = true;
-    mesh.request_vertex_texcoords2D();
-    std::vector<char> assigned(vertices, 0);
-    std::vector<char> seam(vertices, 0);
-    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-      for (int k = 0; k < 3; ++k) {
-        const int v = soup.triangles[t][k];
-        const Vec2d& uv = soup.corner_uv[t][k];
-        if (!assigned[v]) {
-          mesh.set_texcoord2D(handles[v], uv);
-          assigned[v] = 1;
-        } else if (mesh.texcoord2D(handles[v]) != uv) {
-          seam[v] = 1;
-        }
-      }
-    }
-    loaded.uv_seam_vertices = static_cast<std::size_t>(std::count(seam.begin(), seam.end(), 1));
-    if (loaded.uv_seam_vertices > 0) {
-      mesh.request_halfedge_texcoords2D();
-      for (auto f : mesh.faces()) {
-        const Triangle3& tri = soup.triangles[f.idx()];
-        for (auto h : f.halfedges()) {
-          mesh.set_texcoord2D(h, soup.corner_uv[f.idx()][corner_of(tri, h.to().idx())]);
-        }
-      }
-    }
-  }
+  if (with_uvs) set_texture_coordinates(soup, handles, loaded);
   return loaded;
 }
 

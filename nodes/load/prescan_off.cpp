@@ -28,12 +28,19 @@ bool next_off_line(FileScanner& in, std::string_view& line, bool& comments) {
   return false;
 }
 
-}  // namespace
+// What the first line of an OFF file says.
+struct OffKeyword {
+  bool normals = false, colors = false;
+  bool native = false;  // a plain OFF the pre-scan reads itself
+  bool binary = false;
+  std::size_t prefix = 0;                   // characters before "OFF" (ST, C, N)
+  std::string_view counts_on_keyword_line;  // the counts, where they follow the keyword
+};
 
-Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options,
-                    RawMesh* raw) {
-  Prescan scan;
-  scan.format = Format::off;
+// The keyword line, after the comment and blank lines before it (which set scan.off_comments):
+// OpenMesh's [ST][C][N][4][n]OFF[ BINARY], looser for a plain OFF read here.
+OffKeyword read_off_keyword(FileScanner& in, const std::string& file, bool collect, Prescan& scan) {
+  OffKeyword k;
   std::string_view line;
   // Comment and blank lines may come before the keyword (CGAL writes a block of them).
   while (in.next_line(line)) {
@@ -64,7 +71,7 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
   }
   // A plain OFF is read here, not by OpenMesh's reader, so its header may be looser: blanks
   // before the keyword, and the counts on the keyword's line, even glued to it ("OFF8 6 12").
-  const bool native = raw != nullptr && prefix == 0;
+  const bool native = collect && prefix == 0;
   std::string_view counts_on_keyword_line;
   if (native && keyword.size() > 3 && keyword.substr(0, 3) == "OFF" &&
       std::all_of(keyword.begin() + 3, keyword.end(),
@@ -95,84 +102,60 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     throw_invalid(file, first_line + "unexpected " + in_quotes(after) +
                             " after 'OFF' (OpenMesh's reader expects the counts on the next line)");
   }
+  k.normals = normals;
+  k.colors = colors;
+  k.native = native;
+  k.binary = binary;
+  k.prefix = prefix;
+  k.counts_on_keyword_line = counts_on_keyword_line;
+  return k;
+}
 
-  if (binary) {
-    if (prefix != 0) {
-      throw_invalid(file, "binary OFF with ST, C or N prefixes is not supported");
-    }
-    if (scan.off_comments) {
-      throw_invalid(file, "comments before a binary OFF header are not supported");
-    }
-    unsigned char header[12];
-    if (!in.read_bytes(header, sizeof header)) {
-      throw_invalid(file, "truncated: the binary OFF file ends inside its counts");
-    }
-    const auto vertices = static_cast<std::uint64_t>(decode_integer(header, 4, false, false));
-    const auto faces = static_cast<std::uint64_t>(decode_integer(header + 4, 4, false, false));
-    scan.vertices = vertices;
-    scan.faces = faces;
-    check_some_faces(file, scan);
-    check_room(file, declared(vertices, faces),
-               add_saturating(multiply_saturating(vertices, 12), multiply_saturating(faces, 16)),
-               in.remaining());
-    check_counts(file, vertices, faces, options);
-    in.skip(vertices * 12);
-    for (std::uint64_t face = 0; face < faces; ++face) {
-      unsigned char count_bytes[4];
-      std::uint64_t count = 0;
-      bool complete = in.read_bytes(count_bytes, 4);
-      if (complete) {
-        count = static_cast<std::uint64_t>(decode_integer(count_bytes, 4, false, false));
-        complete = in.skip(count * 4);
-      }
-      if (!complete) {
-        throw_invalid(file, "truncated: the header declares " + declared(vertices, faces) +
-                                ", but the data ends in face " + std::to_string(face));
-      }
-      scan.corners += count;
-    }
-    return scan;
+// A binary OFF: its counts, and its face records walked past to count their corners.
+void scan_binary_off(FileScanner& in, const std::string& file, const LoadOptions& options,
+                     const OffKeyword& k, Prescan& scan) {
+  if (k.prefix != 0) {
+    throw_invalid(file, "binary OFF with ST, C or N prefixes is not supported");
   }
-
-  if (!counts_on_keyword_line.empty()) {
-    line = counts_on_keyword_line;
-  } else if (!next_off_line(in, line, scan.off_comments)) {
-    throw_invalid(file, "truncated: expected the counts line (vertices faces edges) after 'OFF'");
+  if (scan.off_comments) {
+    throw_invalid(file, "comments before a binary OFF header are not supported");
   }
-  std::int64_t counts[3] = {0, 0, 0};
-  {
-    std::string_view tokens = line;
-    for (std::int64_t& count : counts) {
-      if (!parse_integer(next_token(tokens), count) || count < 0) {
-        throw_invalid(file, at_line(in.line_number()) +
-                                "expected 3 counts (vertices faces edges), got " + in_quotes(line));
-      }
-    }
-    if (!trim(tokens).empty()) {
-      throw_invalid(file, at_line(in.line_number()) +
-                              "expected exactly 3 counts (vertices faces edges), got " +
-                              in_quotes(line));
-    }
+  unsigned char header[12];
+  if (!in.read_bytes(header, sizeof header)) {
+    throw_invalid(file, "truncated: the binary OFF file ends inside its counts");
   }
-  const auto vertices = static_cast<std::uint64_t>(counts[0]);
-  const auto faces = static_cast<std::uint64_t>(counts[1]);
+  const auto vertices = static_cast<std::uint64_t>(decode_integer(header, 4, false, false));
+  const auto faces = static_cast<std::uint64_t>(decode_integer(header + 4, 4, false, false));
   scan.vertices = vertices;
   scan.faces = faces;
   check_some_faces(file, scan);
-  // Shortest records: "0 0 0\n" and "3 0 1 2\n".
   check_room(file, declared(vertices, faces),
-             add_saturating(multiply_saturating(vertices, 6), multiply_saturating(faces, 8)),
+             add_saturating(multiply_saturating(vertices, 12), multiply_saturating(faces, 16)),
              in.remaining());
   check_counts(file, vertices, faces, options);
-  // A plain OFF is read here; with prefixes OpenMesh's reader reads the extra values.
-  if (!native) raw = nullptr;
-  if (raw != nullptr) {
-    *raw = RawMesh();
-    raw->positions.reserve(vertices);
-    raw->face_start.reserve(faces + 1);
-    raw->corners.reserve(3 * faces);
+  in.skip(vertices * 12);
+  for (std::uint64_t face = 0; face < faces; ++face) {
+    unsigned char count_bytes[4];
+    std::uint64_t count = 0;
+    bool complete = in.read_bytes(count_bytes, 4);
+    if (complete) {
+      count = static_cast<std::uint64_t>(decode_integer(count_bytes, 4, false, false));
+      complete = in.skip(count * 4);
+    }
+    if (!complete) {
+      throw_invalid(file, "truncated: the header declares " + declared(vertices, faces) +
+                              ", but the data ends in face " + std::to_string(face));
+    }
+    scan.corners += count;
   }
+}
 
+// The vertex lines: positions checked (and normals with the N prefix), kept in `raw` where
+// given.
+void read_off_vertices(FileScanner& in, const std::string& file, std::uint64_t vertices,
+                       std::uint64_t faces, const OffKeyword& k, RawMesh* raw, Prescan& scan) {
+  std::string_view line;
+  const bool normals = k.normals;
   for (std::uint64_t vertex = 0; vertex < vertices; ++vertex) {
     if (!next_off_line(in, line, scan.off_comments)) {
       throw_invalid(file, "truncated: the header declares " + declared(vertices, faces) +
@@ -183,7 +166,8 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     double position[3];
     for (int value = 0; value < (normals ? 6 : 3); ++value) {
       const std::string_view token = next_token(tokens);
-      const NumberKind kind = classify_float(token, nullptr, value < 3 ? &position[value] : nullptr);
+      const NumberKind kind =
+          classify_float(token, nullptr, value < 3 ? &position[value] : nullptr);
       if (kind == NumberKind::non_finite) {
         throw_invalid(file, at_line(in.line_number()) + "vertex " + std::to_string(vertex) +
                                 " has a non-finite " + (value < 3 ? "coordinate " : "normal ") +
@@ -198,6 +182,14 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     }
     if (raw != nullptr) raw->positions.emplace_back(position[0], position[1], position[2]);
   }
+}
+
+// The face lines: counts and indices checked (over several lines for a plain OFF), kept in
+// `raw` where given; trailing values counted in scan.off_face_extras.
+void read_off_faces(FileScanner& in, const std::string& file, std::uint64_t vertices,
+                    std::uint64_t faces, const OffKeyword& k, RawMesh* raw, Prescan& scan) {
+  std::string_view line;
+  const bool native = k.native, colors = k.colors;
   for (std::uint64_t face = 0; face < faces; ++face) {
     if (!next_off_line(in, line, scan.off_comments)) {
       throw_invalid(file, "truncated: the header declares " + declared(vertices, faces) +
@@ -243,6 +235,62 @@ Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions&
     if (!colors && !trim(tokens).empty()) ++scan.off_face_extras;
     scan.corners += static_cast<std::uint64_t>(count);
   }
+}
+
+}  // namespace
+
+Prescan prescan_off(FileScanner& in, const std::string& file, const LoadOptions& options,
+                    RawMesh* raw) {
+  Prescan scan;
+  scan.format = Format::off;
+  const OffKeyword k = read_off_keyword(in, file, raw != nullptr, scan);
+  if (k.binary) {
+    scan_binary_off(in, file, options, k, scan);
+    return scan;
+  }
+  std::string_view line;
+  const bool native = k.native;
+  if (!k.counts_on_keyword_line.empty()) {
+    line = k.counts_on_keyword_line;
+  } else if (!next_off_line(in, line, scan.off_comments)) {
+    throw_invalid(file, "truncated: expected the counts line (vertices faces edges) after 'OFF'");
+  }
+  std::int64_t counts[3] = {0, 0, 0};
+  {
+    std::string_view tokens = line;
+    for (std::int64_t& count : counts) {
+      if (!parse_integer(next_token(tokens), count) || count < 0) {
+        throw_invalid(file, at_line(in.line_number()) +
+                                "expected 3 counts (vertices faces edges), got " + in_quotes(line));
+      }
+    }
+    if (!trim(tokens).empty()) {
+      throw_invalid(file, at_line(in.line_number()) +
+                              "expected exactly 3 counts (vertices faces edges), got " +
+                              in_quotes(line));
+    }
+  }
+  const auto vertices = static_cast<std::uint64_t>(counts[0]);
+  const auto faces = static_cast<std::uint64_t>(counts[1]);
+  scan.vertices = vertices;
+  scan.faces = faces;
+  check_some_faces(file, scan);
+  // Shortest records: "0 0 0\n" and "3 0 1 2\n".
+  check_room(file, declared(vertices, faces),
+             add_saturating(multiply_saturating(vertices, 6), multiply_saturating(faces, 8)),
+             in.remaining());
+  check_counts(file, vertices, faces, options);
+  // A plain OFF is read here; with prefixes OpenMesh's reader reads the extra values.
+  if (!native) raw = nullptr;
+  if (raw != nullptr) {
+    *raw = RawMesh();
+    raw->positions.reserve(vertices);
+    raw->face_start.reserve(faces + 1);
+    raw->corners.reserve(3 * faces);
+  }
+
+  read_off_vertices(in, file, vertices, faces, k, raw, scan);
+  read_off_faces(in, file, vertices, faces, k, raw, scan);
   if (next_off_line(in, line, scan.off_comments)) {
     throw_invalid(file, "the header declares " + declared(vertices, faces) +
                             ", but more data follows at line " + std::to_string(in.line_number()) +

@@ -48,74 +48,21 @@ double normal_angle(const LabelledSoup& surface, int a, int b) {
   return std::acos(std::clamp(cosine, -1.0, 1.0));
 }
 
-// Straightens the boundary between labels a and b; returns false if it was left as it was.
-bool straighten_pair(LabelledSoup& surface, int a, int b, const StraightenOptions& options) {
-  const EdgeTriangles edges = edge_triangles(surface.triangles);
-  const std::size_t n_points = surface.points.size();
-  auto in_union = [&](int f) { return surface.labels[f] == a || surface.labels[f] == b; };
-
-  std::vector<char> touches_a(n_points, 0), touches_b(n_points, 0), touches_other(n_points, 0);
-  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
-    const int label = surface.labels[f];
-    for (int v : surface.triangles[f]) {
-      if (label == a)
-        touches_a[v] = 1;
-      else if (label == b)
-        touches_b[v] = 1;
-      else
-        touches_other[v] = 1;
-    }
-  }
-
-  // Union vertices, their edges (with lengths), and the a-b boundary.
-  std::vector<int> local(n_points, -1);
-  std::vector<int> vertices;
-  for (int v = 0; v < static_cast<int>(n_points); ++v) {
-    if (touches_a[v] || touches_b[v]) {
-      local[v] = static_cast<int>(vertices.size());
-      vertices.push_back(v);
-    }
-  }
-  const int n = static_cast<int>(vertices.size());
-  std::vector<std::vector<std::pair<int, double>>> neighbours(n);
-  std::vector<std::uint64_t> union_edges;
-  std::vector<char> on_boundary(n, 0);
-  double boundary_length = 0, boundary_angle = 0;
-  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
-    if (!in_union(static_cast<int>(f))) continue;
-    const Triangle& t = surface.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const int u = t[k], w = t[(k + 1) % 3];
-      const std::uint64_t key = undirected_edge_key(u, w);
-      const std::vector<int>& beside = edges.at(key);
-      const int first = in_union(beside[0]) ? beside[0] : beside[1];
-      if (first != static_cast<int>(f)) continue;  // each edge once, from its first union triangle
-      union_edges.push_back(key);
-      const double length = (surface.points[u] - surface.points[w]).norm();
-      neighbours[local[u]].emplace_back(local[w], length);
-      neighbours[local[w]].emplace_back(local[u], length);
-      if (beside.size() == 2 && in_union(beside[0]) && in_union(beside[1]) &&
-          surface.labels[beside[0]] != surface.labels[beside[1]]) {
-        on_boundary[local[u]] = on_boundary[local[w]] = 1;
-        boundary_length += length;
-        boundary_angle += length * normal_angle(surface, beside[0], beside[1]);
-      }
-    }
-  }
-  // A boundary along a crease is where it belongs, and as smooth as the crease.
-  if (boundary_angle >= options.crease_degrees * std::numbers::pi / 180.0 * boundary_length) return false;
-
-  // Geodesic (edge-path) distance from the a-b boundary.
+// Edge-path distances (Dijkstra) from the vertices marked in `sources` over `neighbours`
+// (vertex, edge length); infinity where none is reached.
+std::vector<double> distances_from(
+    const std::vector<char>& sources,
+    const std::vector<std::vector<std::pair<int, double>>>& neighbours) {
+  const int n = static_cast<int>(sources.size());
   std::vector<double> distance(n, std::numeric_limits<double>::infinity());
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
   for (int i = 0; i < n; ++i) {
-    if (on_boundary[i]) {
+    if (sources[i]) {
       distance[i] = 0;
       queue.emplace(0.0, i);
     }
   }
-  if (queue.empty()) return false;
   while (!queue.empty()) {
     const auto [d, i] = queue.top();
     queue.pop();
@@ -127,47 +74,17 @@ bool straighten_pair(LabelledSoup& surface, int a, int b, const StraightenOption
       }
     }
   }
-  // Each side keeps a core even when it is narrower than the band.
-  double farthest_a = 0, farthest_b = 0;
-  for (int i = 0; i < n; ++i) {
-    const int v = vertices[i];
-    if (!std::isfinite(distance[i]) || touches_other[v]) continue;
-    if (touches_a[v] && !touches_b[v]) farthest_a = std::max(farthest_a, distance[i]);
-    if (touches_b[v] && !touches_a[v]) farthest_b = std::max(farthest_b, distance[i]);
-  }
-  const double band = std::min({options.band_width, 0.5 * farthest_a, 0.5 * farthest_b});
-  if (!(band > 0)) return false;
+  return distance;
+}
 
-  // Dirichlet values; -1 marks a free vertex.
-  Eigen::VectorXd field(n);
-  std::vector<int> free_index(n, -1);
-  int n_free = 0;
-  for (int i = 0; i < n; ++i) {
-    const int v = vertices[i];
-    if (touches_other[v]) {
-      field[i] = touches_a[v] && touches_b[v] ? 0.5 : (touches_a[v] ? 0.0 : 1.0);
-    } else if (distance[i] >= band) {
-      field[i] = touches_a[v] ? 0.0 : 1.0;
-    } else {
-      free_index[i] = n_free++;
-    }
-  }
-  if (n_free == 0) return false;
-  {
-    // Every free vertex must reach a fixed one, or its field is undefined.
-    std::vector<char> reached(n, 0);
-    std::vector<int> stack;
-    for (int i = 0; i < n; ++i)
-      if (free_index[i] < 0) reached[i] = 1, stack.push_back(i);
-    while (!stack.empty()) {
-      const int i = stack.back();
-      stack.pop_back();
-      for (const auto& [j, length] : neighbours[i])
-        if (!reached[j]) reached[j] = 1, stack.push_back(j);
-    }
-    if (std::find(reached.begin(), reached.end(), 0) != reached.end()) return false;
-  }
-
+// The harmonic field over the union of labels a and b (`local`: union vertex of each point)
+// with the Dirichlet values in `field` where free_index is -1, solved for the free vertices
+// (Meyer et al. 2003 cotangent weights, raised to a small positive floor) and clamped to
+// [0, 1]. False where the system cannot be solved.
+bool solve_band_field(const LabelledSoup& surface, int a, int b, const std::vector<int>& local,
+                      const std::vector<int>& free_index, Eigen::VectorXd& field) {
+  auto in_union = [&](int f) { return surface.labels[f] == a || surface.labels[f] == b; };
+  const int n = static_cast<int>(field.size());
   // Meyer et al. 2003, eq. (8), raised to a small positive floor.
   std::map<std::uint64_t, double> weight;
   for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
@@ -195,34 +112,20 @@ bool straighten_pair(LabelledSoup& surface, int a, int b, const StraightenOption
   const Eigen::VectorXd& solution = *solved;
   for (int i = 0; i < n; ++i)
     if (free_index[i] >= 0) field[i] = std::clamp(solution[free_index[i]], 0.0, 1.0);
+  return true;
+}
 
-  // Sides of the iso-line f = 1/2 (0: on it, exactly or snapped), as in cut_along_isoline.
+// The surface with the union of labels a and b cut along the iso-line of `field` at kValue:
+// each crossed edge (in `crossing`, with its parameter from its lower-numbered end) gets a
+// point, each union triangle is split there and labelled a or b by its side (`side` of each
+// union vertex: -1, 0 on the line, 1); other triangles are kept.
+LabelledSoup refined_along_isoline(const LabelledSoup& surface, int a, int b,
+                                   const std::vector<int>& local, const std::vector<int>& side,
+                                   const Eigen::VectorXd& field,
+                                   const std::vector<std::uint64_t>& union_edges,
+                                   const std::map<std::uint64_t, double>& crossing) {
   constexpr double kValue = 0.5;
-  std::vector<int> side(n);
-  for (int i = 0; i < n; ++i) side[i] = field[i] < kValue ? -1 : (field[i] > kValue ? 1 : 0);
-  const double snap = std::max(options.snap_fraction, 1e-12);
-  auto parameter = [&](std::uint64_t key) {
-    const int i = local[edge_key_vertices(key).first], j = local[edge_key_vertices(key).second];
-    return (kValue - field[i]) / (field[j] - field[i]);
-  };
-  std::vector<char> snapped(n, 0);
-  for (std::uint64_t key : union_edges) {
-    const int i = local[edge_key_vertices(key).first], j = local[edge_key_vertices(key).second];
-    if (side[i] * side[j] >= 0) continue;
-    const double t = parameter(key);
-    if (t <= snap) snapped[i] = 1;
-    if (t >= 1.0 - snap) snapped[j] = 1;
-  }
-  for (int i = 0; i < n; ++i)
-    if (snapped[i]) side[i] = 0;
-
-  // The iso-line crosses each crossed edge once, at parameter t from its lower-numbered end.
-  std::map<std::uint64_t, double> crossing;
-  for (std::uint64_t key : union_edges) {
-    const int lo = edge_key_vertices(key).first, hi = edge_key_vertices(key).second;
-    if (side[local[lo]] * side[local[hi]] < 0) crossing.emplace(key, parameter(key));
-  }
-
+  auto in_union = [&](int f) { return surface.labels[f] == a || surface.labels[f] == b; };
   LabelledSoup refined;
   refined.points = surface.points;
   refined.texcoords = surface.texcoords;
@@ -293,6 +196,142 @@ bool straighten_pair(LabelledSoup& surface, int a, int b, const StraightenOption
       }
     }
   }
+  return refined;
+}
+
+// Straightens the boundary between labels a and b; returns false if it was left as it was.
+bool straighten_pair(LabelledSoup& surface, int a, int b, const StraightenOptions& options) {
+  const EdgeTriangles edges = edge_triangles(surface.triangles);
+  const std::size_t n_points = surface.points.size();
+  auto in_union = [&](int f) { return surface.labels[f] == a || surface.labels[f] == b; };
+
+  std::vector<char> touches_a(n_points, 0), touches_b(n_points, 0), touches_other(n_points, 0);
+  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
+    const int label = surface.labels[f];
+    for (int v : surface.triangles[f]) {
+      if (label == a)
+        touches_a[v] = 1;
+      else if (label == b)
+        touches_b[v] = 1;
+      else
+        touches_other[v] = 1;
+    }
+  }
+
+  // Union vertices, their edges (with lengths), and the a-b boundary.
+  std::vector<int> local(n_points, -1);
+  std::vector<int> vertices;
+  for (int v = 0; v < static_cast<int>(n_points); ++v) {
+    if (touches_a[v] || touches_b[v]) {
+      local[v] = static_cast<int>(vertices.size());
+      vertices.push_back(v);
+    }
+  }
+  const int n = static_cast<int>(vertices.size());
+  std::vector<std::vector<std::pair<int, double>>> neighbours(n);
+  std::vector<std::uint64_t> union_edges;
+  std::vector<char> on_boundary(n, 0);
+  double boundary_length = 0, boundary_angle = 0;
+  for (std::size_t f = 0; f < surface.triangles.size(); ++f) {
+    if (!in_union(static_cast<int>(f))) continue;
+    const Triangle& t = surface.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int u = t[k], w = t[(k + 1) % 3];
+      const std::uint64_t key = undirected_edge_key(u, w);
+      const std::vector<int>& beside = edges.at(key);
+      const int first = in_union(beside[0]) ? beside[0] : beside[1];
+      if (first != static_cast<int>(f)) continue;  // each edge once, from its first union triangle
+      union_edges.push_back(key);
+      const double length = (surface.points[u] - surface.points[w]).norm();
+      neighbours[local[u]].emplace_back(local[w], length);
+      neighbours[local[w]].emplace_back(local[u], length);
+      if (beside.size() == 2 && in_union(beside[0]) && in_union(beside[1]) &&
+          surface.labels[beside[0]] != surface.labels[beside[1]]) {
+        on_boundary[local[u]] = on_boundary[local[w]] = 1;
+        boundary_length += length;
+        boundary_angle += length * normal_angle(surface, beside[0], beside[1]);
+      }
+    }
+  }
+  // A boundary along a crease is where it belongs, and as smooth as the crease.
+  if (boundary_angle >= options.crease_degrees * std::numbers::pi / 180.0 * boundary_length)
+    return false;
+
+  // Geodesic (edge-path) distance from the a-b boundary.
+  if (std::find(on_boundary.begin(), on_boundary.end(), 1) == on_boundary.end()) return false;
+  const std::vector<double> distance = distances_from(on_boundary, neighbours);
+  // Each side keeps a core even when it is narrower than the band.
+  double farthest_a = 0, farthest_b = 0;
+  for (int i = 0; i < n; ++i) {
+    const int v = vertices[i];
+    if (!std::isfinite(distance[i]) || touches_other[v]) continue;
+    if (touches_a[v] && !touches_b[v]) farthest_a = std::max(farthest_a, distance[i]);
+    if (touches_b[v] && !touches_a[v]) farthest_b = std::max(farthest_b, distance[i]);
+  }
+  const double band = std::min({options.band_width, 0.5 * farthest_a, 0.5 * farthest_b});
+  if (!(band > 0)) return false;
+
+  // Dirichlet values; -1 marks a free vertex.
+  Eigen::VectorXd field(n);
+  std::vector<int> free_index(n, -1);
+  int n_free = 0;
+  for (int i = 0; i < n; ++i) {
+    const int v = vertices[i];
+    if (touches_other[v]) {
+      field[i] = touches_a[v] && touches_b[v] ? 0.5 : (touches_a[v] ? 0.0 : 1.0);
+    } else if (distance[i] >= band) {
+      field[i] = touches_a[v] ? 0.0 : 1.0;
+    } else {
+      free_index[i] = n_free++;
+    }
+  }
+  if (n_free == 0) return false;
+  {
+    // Every free vertex must reach a fixed one, or its field is undefined.
+    std::vector<char> reached(n, 0);
+    std::vector<int> stack;
+    for (int i = 0; i < n; ++i)
+      if (free_index[i] < 0) reached[i] = 1, stack.push_back(i);
+    while (!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      for (const auto& [j, length] : neighbours[i])
+        if (!reached[j]) reached[j] = 1, stack.push_back(j);
+    }
+    if (std::find(reached.begin(), reached.end(), 0) != reached.end()) return false;
+  }
+
+  if (!solve_band_field(surface, a, b, local, free_index, field)) return false;
+
+  // Sides of the iso-line f = 1/2 (0: on it, exactly or snapped), as in cut_along_isoline.
+  constexpr double kValue = 0.5;
+  std::vector<int> side(n);
+  for (int i = 0; i < n; ++i) side[i] = field[i] < kValue ? -1 : (field[i] > kValue ? 1 : 0);
+  const double snap = std::max(options.snap_fraction, 1e-12);
+  auto parameter = [&](std::uint64_t key) {
+    const int i = local[edge_key_vertices(key).first], j = local[edge_key_vertices(key).second];
+    return (kValue - field[i]) / (field[j] - field[i]);
+  };
+  std::vector<char> snapped(n, 0);
+  for (std::uint64_t key : union_edges) {
+    const int i = local[edge_key_vertices(key).first], j = local[edge_key_vertices(key).second];
+    if (side[i] * side[j] >= 0) continue;
+    const double t = parameter(key);
+    if (t <= snap) snapped[i] = 1;
+    if (t >= 1.0 - snap) snapped[j] = 1;
+  }
+  for (int i = 0; i < n; ++i)
+    if (snapped[i]) side[i] = 0;
+
+  // The iso-line crosses each crossed edge once, at parameter t from its lower-numbered end.
+  std::map<std::uint64_t, double> crossing;
+  for (std::uint64_t key : union_edges) {
+    const int lo = edge_key_vertices(key).first, hi = edge_key_vertices(key).second;
+    if (side[local[lo]] * side[local[hi]] < 0) crossing.emplace(key, parameter(key));
+  }
+
+  LabelledSoup refined =
+      refined_along_isoline(surface, a, b, local, side, field, union_edges, crossing);
 
   const EdgeTriangles refined_edges = edge_triangles(refined.triangles);
   const int after_a = label_components(refined, refined_edges, a);

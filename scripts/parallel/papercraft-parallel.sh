@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A batch with GNU parallel, one model per job, then the merge (README "Many machines").
+# A batch with GNU parallel, one model per job, then the merge (docs/batches.md, "GNU parallel").
 # Job I of N runs `papercraft batch JOB --shard I/N` with N the number of inputs: exactly the
 # I-th input, summarised in <output>/batch.shard-I-of-N.json. The joblog makes a second call
 # run only the jobs that failed or were killed (--resume-failed); the models they finished are
