@@ -345,6 +345,118 @@ struct Samples3d {
   std::size_t count = 0;  // samples laid out, those left out (far from the boundary) included
 };
 
+// Where samples near a piece's boundary lie (narrow_samples): the cells of `size` next to
+// each boundary piece's midpoint.
+struct NearBoundary {
+  double size = 0.0;
+  std::unordered_set<Cell, CellHash> cells;
+};
+
+// Lays out the samples of every triangle of `piece`, at most `spacing` apart: out.step and
+// out.count take all of them, out.samples only those of the triangles marked in `emit` (none
+// when it is empty): 1, those in `near`'s cells, looked up one by one; 2, all.
+void sample_triangles(const TriangleMesh& piece, double spacing, const std::vector<char>& emit,
+                      const NearBoundary& near, Samples3d& out) {
+  std::vector<Samples3d::Sample>& samples = out.samples;
+  bool check_each = false;  // whether the current triangle's samples are looked up one by one
+  auto take = [&](const Vec3& point, double share) {
+    if (!check_each || near.cells.count(cell_of(point, near.size)) > 0)
+      samples.push_back({point, share, false});
+  };
+  for (std::size_t n = 0; n < piece.triangles.size(); ++n) {
+    const Triangle& t = piece.triangles[n];
+    const bool keep = !emit.empty() && emit[n] != 0;
+    check_each = keep && emit[n] == 1;
+    const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
+                                        piece.vertices[t[2]]};
+    const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
+    // Edge e runs from corner e to corner e + 1.
+    const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
+    const int e =
+        static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+    const double longest = length[e];
+    const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
+    const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
+    if (longest > spacing && longest > 4.0 * height) {
+      const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
+      const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
+      out.step = std::max(out.step, height / rows);
+      for (int j = 0; j < rows; ++j) {
+        // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
+        // middle: from p towards r and from q towards r by that share.
+        const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
+        const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
+        const Vec3 start = p + at * (r - p), end = q + at * (r - q);
+        const int count =
+            std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
+        out.step = std::max(out.step, (end - start).norm() / count);
+        out.count += count;
+        if (!keep) continue;
+        for (int i = 0; i < count; ++i)
+          take(start + ((i + 0.5) / count) * (end - start), band / count);
+      }
+      continue;
+    }
+    const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
+    const double share = triangle_area / (double(k) * k);
+    out.step = std::max(out.step, longest / k);
+    out.count += std::size_t(k) * k;
+    if (!keep) continue;
+    const Vec3 u = (b - a) / k, v = (c - a) / k;
+    for (int i = 0; i < k; ++i) {
+      for (int j = 0; i + j < k; ++j) {
+        take(a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share);  // upright
+        if (i + j + 1 < k) take(a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share);
+      }
+    }
+  }
+}
+
+// The cells within reach of the boundary pieces (a point within `size` - its half of one lies
+// in a cell next to the piece's midpoint's).
+NearBoundary near_boundary(
+    const std::unordered_map<Cell, std::vector<std::pair<Vec3, Vec3>>, CellHash>& boundary,
+    double size) {
+  NearBoundary near;
+  near.size = size;
+  for (const auto& entry : boundary) {
+    for (const auto& [a, b] : entry.second) {
+      const Cell c = cell_of(0.5 * (a + b), size);
+      for (std::int64_t dx = -1; dx <= 1; ++dx)
+        for (std::int64_t dy = -1; dy <= 1; ++dy)
+          for (std::int64_t dz = -1; dz <= 1; ++dz)
+            near.cells.insert({c[0] + dx, c[1] + dy, c[2] + dz});
+    }
+  }
+  return near;
+}
+
+// Per triangle, which of its samples to take (sample_triangles' `emit`): 0, none (it meets no
+// cell near the boundary); 2, all (it lies in such cells only); 1, each looked up.
+std::vector<char> triangles_near(const TriangleMesh& piece, const NearBoundary& near) {
+  std::vector<char> emit(piece.triangles.size(), 0);
+  for (std::size_t n = 0; n < piece.triangles.size(); ++n) {
+    const Triangle& t = piece.triangles[n];
+    Vec3 low = piece.vertices[t[0]], high = low;
+    for (int k = 1; k < 3; ++k) {
+      low = low.cwiseMin(piece.vertices[t[k]]);
+      high = high.cwiseMax(piece.vertices[t[k]]);
+    }
+    const Cell from = cell_of(low, near.size), to = cell_of(high, near.size);
+    const std::int64_t cells = (to[0] - from[0] + 1) * (to[1] - from[1] + 1) * (to[2] - from[2] + 1);
+    if (cells > static_cast<std::int64_t>(near.cells.size())) {
+      emit[n] = 1;  // a large triangle: its samples are looked up one by one
+      continue;
+    }
+    std::int64_t in = 0;
+    for (std::int64_t x = from[0]; x <= to[0]; ++x)
+      for (std::int64_t y = from[1]; y <= to[1]; ++y)
+        for (std::int64_t z = from[2]; z <= to[2]; ++z) in += near.cells.count({x, y, z});
+    emit[n] = in == 0 ? 0 : in == cells ? 2 : 1;
+  }
+  return emit;
+}
+
 Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double width,
                          const PieceWidthOptions& options) {
   if (!(width > 0.0) || !std::isfinite(width))
@@ -397,103 +509,15 @@ Samples3d narrow_samples(const char* what, const TriangleMesh& piece, double wid
   // farther out is a centre, and covers only samples that are no centres, within the radius of
   // the boundary. So a sample farther than that is left out, and what is measured stays the
   // same. Boundary pieces are at most a radius long: a point within that distance (twice the
-  // radius and a step) of one lies within `near_size` of its midpoint, so in a cell of that
-  // size next to the midpoint's; `near_cells` holds those cells.
-  double near_size = 0.0;
-  std::unordered_set<Cell, CellHash> near_cells;
-  bool check_each = false;  // whether the current triangle's samples are looked up one by one
-  auto take = [&](const Vec3& point, double share) {
-    if (!check_each || near_cells.count(cell_of(point, near_size)) > 0)
-      samples.push_back({point, share, false});
-  };
-  // Lays out the samples of every triangle: `step` and `count` take all of them, `samples` only
-  // those of the triangles marked in `emit` (none when it is empty): 1, those near the
-  // boundary; 2, all.
-  auto sample_triangles = [&](const std::vector<char>& emit) {
-    for (std::size_t n = 0; n < piece.triangles.size(); ++n) {
-      const Triangle& t = piece.triangles[n];
-      const bool keep = !emit.empty() && emit[n] != 0;
-      check_each = keep && emit[n] == 1;
-      const std::array<Vec3, 3> corner = {piece.vertices[t[0]], piece.vertices[t[1]],
-                                          piece.vertices[t[2]]};
-      const Vec3 &a = corner[0], &b = corner[1], &c = corner[2];
-      // Edge e runs from corner e to corner e + 1.
-      const std::array<double, 3> length = {(b - a).norm(), (c - b).norm(), (a - c).norm()};
-      const int e =
-          static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
-      const double longest = length[e];
-      const double triangle_area = 0.5 * (b - a).cross(c - a).norm();
-      const double height = longest > 0.0 ? 2.0 * triangle_area / longest : 0.0;
-      if (longest > spacing && longest > 4.0 * height) {
-        const Vec3 &p = corner[e], &q = corner[(e + 1) % 3], &r = corner[(e + 2) % 3];
-        const int rows = std::clamp(static_cast<int>(std::ceil(height / spacing)), 1, 256);
-        out.step = std::max(out.step, height / rows);
-        for (int j = 0; j < rows; ++j) {
-          // Row j runs across the band between heights j / rows and (j + 1) / rows, at its
-          // middle: from p towards r and from q towards r by that share.
-          const double from = double(j) / rows, to = double(j + 1) / rows, at = (j + 0.5) / rows;
-          const double band = triangle_area * ((1 - from) * (1 - from) - (1 - to) * (1 - to));
-          const Vec3 start = p + at * (r - p), end = q + at * (r - q);
-          const int count =
-              std::clamp(static_cast<int>(std::ceil((end - start).norm() / spacing)), 1, 65536);
-          out.step = std::max(out.step, (end - start).norm() / count);
-          out.count += count;
-          if (!keep) continue;
-          for (int i = 0; i < count; ++i)
-            take(start + ((i + 0.5) / count) * (end - start), band / count);
-        }
-        continue;
-      }
-      const int k = std::clamp(static_cast<int>(std::ceil(longest / spacing)), 1, 256);
-      const double share = triangle_area / (double(k) * k);
-      out.step = std::max(out.step, longest / k);
-      out.count += std::size_t(k) * k;
-      if (!keep) continue;
-      const Vec3 u = (b - a) / k, v = (c - a) / k;
-      for (int i = 0; i < k; ++i) {
-        for (int j = 0; i + j < k; ++j) {
-          take(a + (i + 1.0 / 3) * u + (j + 1.0 / 3) * v, share);  // upright
-          if (i + j + 1 < k) take(a + (i + 2.0 / 3) * u + (j + 2.0 / 3) * v, share);
-        }
-      }
-    }
-  };
-  // The first pass finds the step the reach depends on; the second takes the samples near the
-  // boundary, of the triangles that come near it.
-  sample_triangles({});
-  near_size = 2.5 * radius + out.step;
-  for (const auto& entry : boundary) {
-    for (const auto& [a, b] : entry.second) {
-      const Cell c = cell_of(0.5 * (a + b), near_size);
-      for (std::int64_t dx = -1; dx <= 1; ++dx)
-        for (std::int64_t dy = -1; dy <= 1; ++dy)
-          for (std::int64_t dz = -1; dz <= 1; ++dz)
-            near_cells.insert({c[0] + dx, c[1] + dy, c[2] + dz});
-    }
-  }
-  std::vector<char> emit(piece.triangles.size(), 0);
-  for (std::size_t n = 0; n < piece.triangles.size(); ++n) {
-    const Triangle& t = piece.triangles[n];
-    Vec3 low = piece.vertices[t[0]], high = low;
-    for (int k = 1; k < 3; ++k) {
-      low = low.cwiseMin(piece.vertices[t[k]]);
-      high = high.cwiseMax(piece.vertices[t[k]]);
-    }
-    const Cell from = cell_of(low, near_size), to = cell_of(high, near_size);
-    const std::int64_t cells = (to[0] - from[0] + 1) * (to[1] - from[1] + 1) * (to[2] - from[2] + 1);
-    if (cells > static_cast<std::int64_t>(near_cells.size())) {
-      emit[n] = 1;  // a large triangle: its samples are looked up one by one
-      continue;
-    }
-    std::int64_t in = 0;
-    for (std::int64_t x = from[0]; x <= to[0]; ++x)
-      for (std::int64_t y = from[1]; y <= to[1]; ++y)
-        for (std::int64_t z = from[2]; z <= to[2]; ++z) in += near_cells.count({x, y, z});
-    emit[n] = in == 0 ? 0 : in == cells ? 2 : 1;
-  }
+  // radius and a step) of one lies within the near size of its midpoint, so in a cell of that
+  // size next to the midpoint's. The first pass finds the step the reach depends on; the second
+  // takes the samples near the boundary, of the triangles that come near it.
+  sample_triangles(piece, spacing, {}, NearBoundary{}, out);
+  const NearBoundary near_cells = near_boundary(boundary, 2.5 * radius + out.step);
+  const std::vector<char> emit = triangles_near(piece, near_cells);
   out.step = 0.0;
   out.count = 0;
-  sample_triangles(emit);
+  sample_triangles(piece, spacing, emit, near_cells, out);
   // Samples are taken cell by cell: a cell's samples share the 27 cells around it, looked up
   // once for all of them (a thin triangle puts many samples into one cell).
   auto by_cell = [&](double size, auto&& take) {
