@@ -20,7 +20,8 @@ struct StripBoundaries;
 /// The pieces cut_rejected_piece made of parts, each found again by the part's contents, its
 /// strip boundaries and the verdict that rejected it (all compared exactly), so a part whose
 /// strip or verdict came out otherwise is cut afresh. Thread-safe. Holds at most
-/// `max_faces` faces of pieces; a cut past that is not kept.
+/// `max_faces` faces of pieces (and a copy of each part's points and faces beside them); a cut
+/// past that is not kept.
 class CutMemo {
  public:
   explicit CutMemo(long max_faces = 2'000'000) : max_faces_(max_faces) {}
@@ -38,8 +39,18 @@ class CutMemo {
   std::size_t size() const;
 
  private:
+  // A part's contents, compared exactly: its points (x, y, z each), its faces' corners and its
+  // input vertices.
+  struct Part {
+    std::vector<double> points;
+    std::vector<int> corners;
+    std::vector<int> inputs;
+  };
+  static Part contents_of(const Mesh& part);
+  static std::uint64_t key_of(const Part& part, const StripVerdict& verdict);
+
   struct Entry {
-    std::uint64_t key;
+    Part part;
     std::vector<int> first, second;
     Vec3 witness;
     int hole;

@@ -74,6 +74,9 @@ TEST(CutMemo, AnotherVerdictOrBoundaryFindsNothing) {
   StripBoundaries swapped = boundaries;
   std::swap(swapped.first, swapped.second);
   EXPECT_FALSE(memo.take(sphere_mesh, swapped, verdict).has_value());
+  Mesh nudged = sphere_mesh;  // the same faces with one point moved: another part
+  nudged.point(nudged.vertex_handle(0))[2] += 1e-12;
+  EXPECT_FALSE(memo.take(nudged, boundaries, verdict).has_value());
   EXPECT_TRUE(memo.take(sphere_mesh, boundaries, verdict).has_value());
 }
 
