@@ -278,7 +278,8 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
   if (out_of_budget) {
     const std::string text =
         "joins in 3D: stopped after " + std::to_string(trials) +
-        " merges of the whole model to judge them (most_rejoin_trials); " +
+        (trials == 1 ? " merge" : " merges") +
+        " of the whole model to judge them (most_rejoin_trials); " +
         std::to_string(shortfalls(short_pieces(merged, limits, options.narrow_join_share, scale),
                                   options.narrow_join_share)) +
         " piece limits still missed";

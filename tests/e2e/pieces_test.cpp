@@ -601,7 +601,7 @@ TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
   for (const auto& note : budget_notes) {
     const std::string text = note.get<std::string>();
     joined += text.find("together with its neighbour's") != std::string::npos;
-    stopped += text.find("joins in 3D: stopped after 1 merges of the whole model") !=
+    stopped += text.find("joins in 3D: stopped after 1 merge of the whole model") !=
                std::string::npos;
   }
   EXPECT_EQ(joined, 1) << budget_notes.dump();
