@@ -51,4 +51,23 @@ ModelStrips collect_model_strips(std::vector<std::shared_ptr<const UnfoldedStrip
   return strips;
 }
 
+void record_model_strips(ModelRun& model, const ModelStrips& strips) {
+  double bound = 0.0;
+  bool certified = true;
+  for (const auto& s : strips.strips3d) {
+    bound = std::max(bound, s->upper_bound);
+    certified = certified && s->certified;
+  }
+  // H(strips, input) <= H(strips, proxy) + H(proxy, input); without a proxy the second is 0.
+  const double proxy_distance = model.proxy_distance();
+  model.update([&](ModelRecord& r) {
+    r.strips_3d = static_cast<int>(strips.strips3d.size());
+    r.flat_strips_before_merge = static_cast<int>(strips.flat_before_merge);
+    r.flat_strips = static_cast<int>(strips.flat.size());
+    r.strips_bound = bound;
+    r.hausdorff_bound = bound + proxy_distance;
+    r.certified = certified;
+  });
+}
+
 }  // namespace papercraft

@@ -55,18 +55,18 @@ allowed() {
   fi
 }
 
-refused nodes/merge/congruent.cpp nodes/layout/pages.h "a stage uses core/ and engine/"
+refused nodes/merge/congruent_join.cpp nodes/layout/pages.h "a stage uses core/ and engine/"
 refused nodes/merge/congruent_node.cpp nodes/unfold/sequential_node.h "a stage uses core/"
-refused nodes/merge/congruent.cpp graph/messages.h "a stage's algorithms know nothing"
+refused nodes/merge/congruent_join.cpp graph/messages.h "a stage's algorithms know nothing"
 refused engine/refine/refine.cpp nodes/cut/harmonic_node.h "engine/ includes core/"
 refused engine/refine/refine.cpp graph/node.h "engine/ includes core/"
 refused core/mesh.h engine/refine/refine.h "core/ includes core/ only"
 refused graph/node.h nodes/layout/pages.h "graph/ includes core/"
 refused graph/node.h engine/hausdorff/bounded.h "graph/ uses the engine through"
 refused runner/run_models.cpp nodes/layout/pages.h "runner/ uses the stages"
-allowed nodes/merge/congruent.cpp engine/refine/rejoin.h
+allowed nodes/merge/rejoin_3d_node.cpp engine/refine/rejoin.h
 allowed nodes/merge/congruent_node.cpp graph/messages.h
-allowed nodes/merge/congruent.cpp nodes/merge/congruent.h
+allowed nodes/merge/congruent_join.cpp nodes/merge/congruent.h
 allowed graph/node.h engine/refine/refine.h
 allowed runner/main.cpp engine/refine/refine.h
 
