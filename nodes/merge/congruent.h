@@ -2,6 +2,9 @@
 // Merging of flat strips along congruent shared boundaries: the `merge` stage's algorithm
 // (paper section 3.4 and fig. 3, a cylinder with holes; DESIGN.md "Merge").
 //
+// Each function below is implemented in a file of its own in nodes/merge/, over the moves it
+// shares with the others (docs/stages/merge.md, "Source").
+//
 // Example (node config): merge: {impl: merge.congruent, to: [layout]}
 
 #include <cstddef>
