@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "core/effort.h"
 #include "core/strip.h"
 
 namespace papercraft {
@@ -40,6 +41,15 @@ struct MergeOptions {
   /// each cost a merge of the whole model to judge; at most this many are judged per model.
   /// Where the budget runs out the node keeps the best merge reached and says so in a note.
   int most_rejoin_trials = 4;
+  /// The print scale (page mm per model unit). With it the hinges are chosen by what they cost a
+  /// person (local_effort, core/piece_effort.h: the seams they open, the joining strips a slit
+  /// too thin for a glue flap needs, sawtooth corners), a modest piece is hinged only where that
+  /// costs less than keeping it, and the node's choices between whole merges (joins in 3D, how
+  /// deep a band is cut) go by the same cost; 0: hinges by the slit they leave (slit_points) and
+  /// merges by the pieces left short. The node sets it from the model.
+  double mm_per_unit = 0.0;
+  /// The weights of that cost (the config's `effort:` map; the node sets them).
+  EffortWeights weights;
 };
 
 /// Joins flat strips of one model whose shared boundaries have congruent flat images.

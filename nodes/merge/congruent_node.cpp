@@ -47,9 +47,12 @@ void register_merge_congruent(Registry& registry) {
                 .outputs = {{"out", MessageType::of<ModelStrips>()}},
                 .params = table.specs(),
                 .create = [](const Params& params, const NodeContext& context) {
-                  const MergeOptions options = table.read(params);
+                  const MergeOptions read = table.read(params);
                   const RefineOptions refine = context.refine;
-                  return make_body([options, refine](const Envelope& in, Emitter& out) {
+                  return make_body([read, refine](const Envelope& in, Emitter& out) {
+                    MergeOptions options = read;  // judged by the effort at the model's scale
+                    options.mm_per_unit = in.model->mm_per_unit();
+                    options.weights = in.model->settings->effort;
                     Merged merged = merge_with_rejoins(in.get<Gathered>().as<UnfoldedStrip>(),
                                                        *in.model, options, refine);
                     note_double_cover(*in.model, merged.twice);

@@ -3,11 +3,14 @@
 #include "nodes/merge/hinge.h"
 
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <utility>
 
 #include "core/flat_boundary.h"
 #include "core/seams.h"
 #include "nodes/merge/chains.h"
+#include "nodes/merge/hinge_cost.h"
 #include "nodes/merge/join_measures.h"
 #include "nodes/merge/rigid_join.h"
 #include "nodes/merge/validate.h"
@@ -16,19 +19,32 @@ namespace papercraft {
 namespace merge_detail {
 
 bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& options,
-                 double slit_width) {
+                 double slit_width, double min_area, bool must_gain) {
   constexpr int kMostWholeHinges = 16;
   const std::vector<PairCandidate> pairs = shared_boundaries(strips, s);
   auto hinges = hinges_of(pairs, strips,
                           [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
   std::stable_partition(hinges.begin(), hinges.end(), [](const Hinge& h) { return h.chain_end; });
+  const bool by_effort = options.mm_per_unit > 0.0;
+  std::map<int, std::unique_ptr<HingeCost>> costs;  // per pair
   FlatStrip best;
   int best_pair = -1, best_slit = 0, tried = 0;
+  double best_gain = 0.0;
   for (const Hinge& hinge : hinges) {
-    if (best_pair >= 0 && (slit_width <= 0.0 || ++tried > kMostWholeHinges)) break;
+    if (best_pair >= 0 && ((slit_width <= 0.0 && !by_effort) || ++tried > kMostWholeHinges))
+      break;
     const PairCandidate& pair = pairs[hinge.pair];
     FlatStrip merged;
-    if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged, false)) continue;
+    if (!try_merge(strips[pair.x], strips[pair.y], {hinge.edge}, options, merged, by_effort))
+      continue;
+    if (by_effort) {
+      auto& cost = costs[hinge.pair];
+      if (!cost) cost = std::make_unique<HingeCost>(strips, pair.x, pair.y, options, min_area);
+      const double gain = cost->gain(merged);
+      if ((must_gain && !(gain > 0.0)) || (best_pair >= 0 && gain <= best_gain)) continue;
+      best = std::move(merged), best_pair = hinge.pair, best_gain = gain;
+      continue;
+    }
     const int slit =
         slit_width > 0.0 ? slit_points(merged, strips[pair.x].vertices2d.size(), slit_width) : 0;
     if (best_pair >= 0 && slit >= best_slit) continue;
@@ -69,7 +85,11 @@ std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double
   while (true) {
     const int modest = smallest_below(strips, below_area, given_up);
     if (modest < 0) break;
-    if (!hinge_whole(strips, modest, options, min_width)) given_up.insert(strips[modest].id);
+    // Hinged only where it pays: a piece of legal size is not worth a slit without room for a
+    // glue flap.
+    if (!hinge_whole(strips, modest, options, min_width,
+                     below_area / std::max(1.0, options.modest_join_factor), true))
+      given_up.insert(strips[modest].id);
   }
   label_seams(strips);
   return strips;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <memory>
 #include <set>
 #include <utility>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "nodes/merge/band_split.h"
 #include "nodes/merge/chains.h"
 #include "nodes/merge/congruent.h"
+#include "nodes/merge/hinge_cost.h"
 #include "nodes/merge/join_measures.h"
 #include "nodes/merge/rigid_join.h"
 #include "nodes/merge/transfer.h"
@@ -29,6 +31,7 @@ using merge_detail::PairCandidate;
 using merge_detail::rim_of;
 using merge_detail::shared_boundaries;
 using merge_detail::shares_before_and_joined;
+using merge_detail::HingeCost;
 using merge_detail::slit_points;
 using merge_detail::try_merge;
 using merge_detail::validate;
@@ -73,19 +76,35 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     // Of the hinges that give a union less narrow than the strip, and either no narrower than
     // the neighbour was (or than the bound) or narrow over no more area than the two together
     // (a band kept whole beside a wide neighbour: one seam fewer, no tab on the band), the one
-    // that leaves the least slit.
+    // that leaves the least slit; with a print scale, of the first kMostJudged that lay it flat,
+    // the one whose HingeCost gain is largest.
+    constexpr int kMostJudged = 16;
+    const bool by_effort = options.mm_per_unit > 0.0;
+    std::map<int, std::unique_ptr<HingeCost>> costs;  // per pair
     FlatStrip best;
-    int best_hinge = -1, best_slit = 0;
-    double best_share = 0.0;
+    int best_hinge = -1, best_slit = 0, judged = 0;
+    double best_share = 0.0, best_gain = 0.0;
     const int tries = std::min(static_cast<int>(hinges.size()), most_hinges);
     for (int h = 0; h < tries; ++h) {
       const PairCandidate& pair = pairs[hinges[h].pair];
       const int other = pair.x == narrow ? pair.y : pair.x;
       FlatStrip merged;
-      if (!try_merge(strips[pair.x], strips[pair.y], {hinges[h].edge}, options, merged, false))
+      if (!try_merge(strips[pair.x], strips[pair.y], {hinges[h].edge}, options, merged,
+                     by_effort))
         continue;
-      const int slit = slit_points(merged, strips[pair.x].vertices2d.size(), min_width);
-      if (best_hinge >= 0 && slit >= best_slit) continue;
+      int slit = 0;
+      double gain = 0.0;
+      if (by_effort) {
+        if (best_hinge >= 0 && judged >= kMostJudged) break;
+        auto& cost = costs[hinges[h].pair];
+        if (!cost) cost = std::make_unique<HingeCost>(strips, pair.x, pair.y, options, min_area);
+        gain = cost->gain(merged);
+        ++judged;
+        if (best_hinge >= 0 && gain <= best_gain) continue;
+      } else {
+        slit = slit_points(merged, strips[pair.x].vertices2d.size(), min_width);
+        if (best_hinge >= 0 && slit >= best_slit) continue;
+      }
       const double joined_share = share_of(merged);
       if (!(joined_share < share[narrow])) continue;
       if (joined_share > std::max(share[other], narrow_share) &&
@@ -93,8 +112,8 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
               share[narrow] * flat_area(strips[narrow]) + share[other] * flat_area(strips[other]))
         continue;
       best = std::move(merged);
-      best_hinge = h, best_slit = slit, best_share = joined_share;
-      if (slit == 0) break;
+      best_hinge = h, best_slit = slit, best_share = joined_share, best_gain = gain;
+      if (!by_effort && slit == 0) break;
     }
     if (best_hinge < 0) {
       // No hinge takes it whole: cut in two, each half hinged onto a neighbour, where the

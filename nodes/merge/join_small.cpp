@@ -38,7 +38,7 @@ std::vector<FlatStrip> join_small_strips(std::vector<FlatStrip> strips, double m
     const int small = smallest_below(strips, min_area, given_up);
     if (small < 0) break;
     // Hinged whole over one of its shared edges, the one leaving the least slit.
-    bool joined = hinge_whole(strips, small, options, min_width);
+    bool joined = hinge_whole(strips, small, options, min_width, min_area);
     if (!joined) joined = absorb_by_triangles(strips, small, options);
     if (!joined && min_width > 0.0) {
       // Cut in two, each half hinged onto a neighbour that gets no narrower than it was (or

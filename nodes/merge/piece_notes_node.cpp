@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/flat_boundary.h"
+#include "core/piece_effort.h"
 #include "core/piece_width.h"
 
 namespace papercraft {
@@ -125,6 +126,20 @@ int shortfalls(const std::vector<Short>& shorts, double narrow_bound) {
   int count = 0;
   for (const Short& piece : shorts) count += piece.small + (piece.narrow > narrow_bound);
   return count;
+}
+
+double model_effort(const Merged& merged, const PieceLimits& limits, const MergeOptions& options) {
+  const std::vector<FlatStrip>& flat = merged.strips.flat;
+  std::vector<int> all(flat.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+  const double scale = options.mm_per_unit;
+  EffortTerms terms = local_effort_terms(flat, all,
+                                         {.mm_per_unit = scale,
+                                          .min_area_mm2 = limits.min_area * scale * scale,
+                                          .weights = options.weights});
+  for (const FlatStrip& strip : flat)
+    terms.narrow_pieces += narrow_share(strip, limits) > limits.max_narrow_share;
+  return effort_total(terms, options.weights);
 }
 
 }  // namespace papercraft

@@ -42,4 +42,10 @@ std::vector<Short> short_pieces(const Merged& merged, const PieceLimits& limits,
 /// Each limit a short piece misses counts once.
 int shortfalls(const std::vector<Short>& shorts, double narrow_bound);
 
+/// What `merged`'s pieces cost a person (local_effort over all of them, core/piece_effort.h, at
+/// options.mm_per_unit with options.weights), each piece narrower than min_width over more than
+/// limits.max_narrow_share counted as assembly_effort counts it on the pages. What the node's
+/// choices between whole merges compare.
+double model_effort(const Merged& merged, const PieceLimits& limits, const MergeOptions& options);
+
 }  // namespace papercraft

@@ -84,10 +84,16 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
         Merged trial = merge_model(trial_unfolded, options, limits);
         const int after = shortfalls(short_pieces(trial, limits, options.narrow_join_share, scale),
                                      options.narrow_join_share);
-        spdlog::debug("{}: parts {} and {} are one strip ({} faces); pieces left short {} -> {}",
-                      model.name, mine->candidate->part.path, other->candidate->part.path,
-                      accepted_faces, before, after);
-        if (after >= before) continue;
+        const bool by_effort = options.mm_per_unit > 0.0;
+        const double effort_before = by_effort ? model_effort(merged, limits, options) : 0.0;
+        const double effort_after = by_effort ? model_effort(trial, limits, options) : 0.0;
+        spdlog::debug(
+            "{}: parts {} and {} are one strip ({} faces); pieces left short {} -> {}, effort "
+            "{:.1f} -> {:.1f}",
+            model.name, mine->candidate->part.path, other->candidate->part.path, accepted_faces,
+            before, after, effort_before, effort_after);
+        // Kept where it costs a person less (or, without a print scale, leaves fewer short).
+        if (by_effort ? !(effort_after < effort_before) : after >= before) continue;
         std::ostringstream text;
         text << "refined the part of a piece of " << std::lround(piece.area_mm2) << " mm^2"
              << (piece.narrow > options.narrow_join_share
@@ -139,7 +145,10 @@ Merged merge_with_rejoins(std::vector<std::shared_ptr<const UnfoldedStrip>> unfo
     const int deep_short = short_of(deep);
     spdlog::debug("{}: pieces left short cutting bands in {}: {}, in {}: {}", model.name,
                   shallow.most_band_pieces, shallow_short, options.most_band_pieces, deep_short);
-    if (deep_short <= shallow_short) merged = std::move(deep);
+    const bool deeper = options.mm_per_unit > 0.0
+                            ? model_effort(deep, limits, options) < model_effort(merged, limits, options)
+                            : deep_short <= shallow_short;
+    if (deeper) merged = std::move(deep);
   }
   return merged;
 }
