@@ -28,13 +28,24 @@ double effort_total(const EffortTerms& t, const EffortWeights& w) {
          w.small_piece * t.small_pieces + w.narrow_piece * t.narrow_pieces;
 }
 
-int count_sawtooth_corners(const std::vector<Vec2>& loop, double turn_degrees, double reach_mm) {
+std::vector<int> sawtooth_corners(const std::vector<Vec2>& loop, double turn_degrees,
+                                  double reach_mm) {
   std::vector<Vec2> points;
-  for (const Vec2& p : loop)
-    if (points.empty() || (p - points.back()).norm() > 1e-9) points.push_back(p);
-  while (points.size() > 1 && (points.front() - points.back()).norm() <= 1e-9) points.pop_back();
+  std::vector<int> index;  // of each point kept, in `loop`
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    if (!points.empty() && (loop[i] - points.back()).norm() <= 1e-9) {
+      index.back() = static_cast<int>(i);
+      continue;
+    }
+    points.push_back(loop[i]);
+    index.push_back(static_cast<int>(i));
+  }
+  while (points.size() > 1 && (points.front() - points.back()).norm() <= 1e-9) {
+    points.pop_back();
+    index.pop_back();
+  }
   const std::size_t n = points.size();
-  if (n < 3) return 0;
+  if (n < 3) return {};
   // turn[i]: signed turn at point i (radians, counter-clockwise positive); along[i]: the
   // outline's length from point 0 to point i.
   std::vector<double> turn(n), along(n + 1, 0.0);
@@ -60,9 +71,14 @@ int count_sawtooth_corners(const std::vector<Vec2>& loop, double turn_degrees, d
       }
     }
   }
-  int count = 0;
-  for (char m : marked) count += m;
-  return count;
+  std::vector<int> corners;
+  for (std::size_t i = 0; i < n; ++i)
+    if (marked[i]) corners.push_back(index[i]);
+  return corners;
+}
+
+int count_sawtooth_corners(const std::vector<Vec2>& loop, double turn_degrees, double reach_mm) {
+  return static_cast<int>(sawtooth_corners(loop, turn_degrees, reach_mm).size());
 }
 
 namespace {

@@ -66,6 +66,11 @@ double effort_total(const EffortTerms& terms, const EffortWeights& weights);
 int count_sawtooth_corners(const std::vector<Vec2>& loop, double turn_degrees = 60.0,
                            double reach_mm = 4.0);
 
+/// The indices into `loop` of its sawtooth corners (count_sawtooth_corners counts them; of
+/// consecutive points closer than 1e-9 mm, the last), in order.
+std::vector<int> sawtooth_corners(const std::vector<Vec2>& loop, double turn_degrees = 60.0,
+                                  double reach_mm = 4.0);
+
 /// Counts the terms on `layout`'s pages and weighs them. A piece's narrowness is measured with
 /// narrow_area_fraction at min_width_mm on its page triangles.
 AssemblyEffort assembly_effort(const PatternLayout& layout, const EffortLimits& limits,

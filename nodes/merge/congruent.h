@@ -180,6 +180,22 @@ std::vector<FlatStrip> hinge_modest_strips(std::vector<FlatStrip> strips, double
                                            const MergeOptions& options = {},
                                            double min_width = 0.0);
 
+/// Hands triangles across seams where that makes the pieces cheaper to cut and glue, with a
+/// print scale (options.mm_per_unit > 0; otherwise `strips` come back as they are): a triangle
+/// of a piece at a sawtooth corner of its outline (count_sawtooth_corners, in page mm) that has
+/// an edge on a neighbour's rim goes to that neighbour (with whatever it alone held on,
+/// take_triangle) where the neighbour's union with it welds along every edge they share (no
+/// slit), lands on none of its triangles, the piece left keeps at least `min_area` and neither
+/// gets narrower than `min_width` over more than `narrow_share` of its area (or than it was),
+/// and what the two and their seams cost a person drops (MoveCost: the sawtooth corners it
+/// straightens against the glue length it adds). The moves that pay are queued by gain, the
+/// best applied first; after one, only the two pieces and their neighbours are judged again.
+/// The 3D surface is unchanged. Then label_seams runs.
+/// \pre as merge_congruent. \throws InvalidInputException as merge_congruent.
+std::vector<FlatStrip> smooth_seams(std::vector<FlatStrip> strips, double min_area,
+                                    double min_width, double narrow_share,
+                                    const MergeOptions& options);
+
 /// The merge node's joins after merge_congruent: join_small_strips, then join_narrow_strips
 /// (at most 256 hinges a strip), then join_small_strips once more where crumbs were left, since
 /// the narrow joins change their neighbours (a union to fold onto, a neighbour large enough to

@@ -10,7 +10,7 @@
 #include "core/flat_boundary.h"
 #include "core/seams.h"
 #include "nodes/merge/chains.h"
-#include "nodes/merge/hinge_cost.h"
+#include "nodes/merge/move_cost.h"
 #include "nodes/merge/join_measures.h"
 #include "nodes/merge/rigid_join.h"
 #include "nodes/merge/validate.h"
@@ -26,7 +26,7 @@ bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& opti
                           [&](const PairCandidate& pair) { return pair.x == s || pair.y == s; });
   std::stable_partition(hinges.begin(), hinges.end(), [](const Hinge& h) { return h.chain_end; });
   const bool by_effort = options.mm_per_unit > 0.0;
-  std::map<int, std::unique_ptr<HingeCost>> costs;  // per pair
+  std::map<int, std::unique_ptr<MoveCost>> costs;  // per pair
   FlatStrip best;
   int best_pair = -1, best_slit = 0, tried = 0;
   double best_gain = 0.0;
@@ -39,7 +39,7 @@ bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& opti
       continue;
     if (by_effort) {
       auto& cost = costs[hinge.pair];
-      if (!cost) cost = std::make_unique<HingeCost>(strips, pair.x, pair.y, options, min_area);
+      if (!cost) cost = std::make_unique<MoveCost>(strips, std::vector<int>{pair.x, pair.y}, options, min_area);
       const double gain = cost->gain(merged);
       if ((must_gain && !(gain > 0.0)) || (best_pair >= 0 && gain <= best_gain)) continue;
       best = std::move(merged), best_pair = hinge.pair, best_gain = gain;

@@ -17,7 +17,7 @@ namespace papercraft::merge_detail {
 /// (slit_points at `slit_width`; the earlier on a tie) is kept: a hinge in the middle of a chain
 /// that does not weld opens a thin wedge on both sides of it, one at its end only on one.
 /// `slit_width` <= 0: the first that lays it flat. With options.mm_per_unit > 0, of the same
-/// hinges the one with the largest HingeCost gain (`min_area` the limit a piece is small under),
+/// hinges the one with the largest MoveCost gain (`min_area` the limit a piece is small under),
 /// and with `must_gain` only one whose gain is positive. False (strips unchanged) when no hinge
 /// lays it flat (or pays).
 bool hinge_whole(std::vector<FlatStrip>& strips, int s, const MergeOptions& options,

@@ -14,7 +14,7 @@
 #include "nodes/merge/band_split.h"
 #include "nodes/merge/chains.h"
 #include "nodes/merge/congruent.h"
-#include "nodes/merge/hinge_cost.h"
+#include "nodes/merge/move_cost.h"
 #include "nodes/merge/join_measures.h"
 #include "nodes/merge/rigid_join.h"
 #include "nodes/merge/transfer.h"
@@ -31,7 +31,7 @@ using merge_detail::PairCandidate;
 using merge_detail::rim_of;
 using merge_detail::shared_boundaries;
 using merge_detail::shares_before_and_joined;
-using merge_detail::HingeCost;
+using merge_detail::MoveCost;
 using merge_detail::slit_points;
 using merge_detail::try_merge;
 using merge_detail::validate;
@@ -77,10 +77,10 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
     // the neighbour was (or than the bound) or narrow over no more area than the two together
     // (a band kept whole beside a wide neighbour: one seam fewer, no tab on the band), the one
     // that leaves the least slit; with a print scale, of the first kMostJudged that lay it flat,
-    // the one whose HingeCost gain is largest.
+    // the one whose MoveCost gain is largest.
     constexpr int kMostJudged = 16;
     const bool by_effort = options.mm_per_unit > 0.0;
-    std::map<int, std::unique_ptr<HingeCost>> costs;  // per pair
+    std::map<int, std::unique_ptr<MoveCost>> costs;  // per pair
     FlatStrip best;
     int best_hinge = -1, best_slit = 0, judged = 0;
     double best_share = 0.0, best_gain = 0.0;
@@ -97,7 +97,7 @@ std::vector<FlatStrip> join_narrow_strips(std::vector<FlatStrip> strips, double 
       if (by_effort) {
         if (best_hinge >= 0 && judged >= kMostJudged) break;
         auto& cost = costs[hinges[h].pair];
-        if (!cost) cost = std::make_unique<HingeCost>(strips, pair.x, pair.y, options, min_area);
+        if (!cost) cost = std::make_unique<MoveCost>(strips, std::vector<int>{pair.x, pair.y}, options, min_area);
         gain = cost->gain(merged);
         ++judged;
         if (best_hinge >= 0 && gain <= best_gain) continue;

@@ -20,6 +20,7 @@ std::vector<FlatStrip> join_small_and_narrow_strips(std::vector<FlatStrip> strip
   if (options.modest_join_factor > 1.0)
     strips = hinge_modest_strips(std::move(strips), options.modest_join_factor * min_area, options,
                                  min_width);
+  strips = smooth_seams(std::move(strips), min_area, min_width, options.narrow_join_share, options);
   if (left) {
     // The crumbs left are those of `small` still under min_area (a hinge above may have
     // joined one).

@@ -17,12 +17,6 @@
 #include "nodes/merge/strip_parts.h"
 
 namespace papercraft::merge_detail {
-namespace {
-
-// Triangle `gone` of `strip` taken away, with whatever it alone held to the rest (a ruled
-// strip is a path of triangles: taking one takes the end beyond it too): `rest` is the
-// largest piece left (by area), `taken` the triangle with the smaller pieces. False when
-// nothing is left or the rest would meet the part taken only at a point of its own.
 bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, FlatStrip& taken) {
   const int n = static_cast<int>(strip.triangles.size());
   if (n < 2) return false;
@@ -67,7 +61,6 @@ bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, Fl
   return true;
 }
 
-}  // namespace
 
 bool grow_from_neighbours(std::vector<FlatStrip>& strips, int index, GrowUntil until,
                           double min_area, double min_width, double narrow_share,

@@ -10,6 +10,13 @@
 
 namespace papercraft::merge_detail {
 
+/// Triangle `gone` of `strip` taken away, with whatever it alone held to the rest (a ruled
+/// strip is a path of triangles: taking one takes the end beyond it too): `rest` is the
+/// largest piece left (by area; its boundary left empty), `taken` the triangle with the smaller
+/// pieces. False when nothing is left or the rest would meet the part taken only at a point of
+/// its own.
+bool take_triangle(const FlatStrip& strip, std::size_t gone, FlatStrip& rest, FlatStrip& taken);
+
 /// What grow_from_neighbours grows a strip until: min_area, or wide enough.
 enum class GrowUntil { kMinArea, kWide };
 
