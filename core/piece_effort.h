@@ -22,7 +22,7 @@ struct PieceEffortOptions {
   double mm_per_unit = 1.0;    // the print scale: model units to page mm
   double min_area_mm2 = 0.0;   // a piece under this counts as small (0: not counted)
   double flap_height_mm = 1.0;  // the lowest glue flap the layout prints
-  EffortWeights weights;
+  EffortWeights weights{};
 };
 
 /// Whether a glue flap `height` mm high fits beside a seam side: `side` the side's points in page

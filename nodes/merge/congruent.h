@@ -49,7 +49,7 @@ struct MergeOptions {
   /// merges by the pieces left short. The node sets it from the model.
   double mm_per_unit = 0.0;
   /// The weights of that cost (the config's `effort:` map; the node sets them).
-  EffortWeights weights;
+  EffortWeights weights{};
 };
 
 /// Joins flat strips of one model whose shared boundaries have congruent flat images.
