@@ -432,28 +432,27 @@ TEST(Pieces, CrowdedLabelsPlacedFirstLeaveNoTextOverAnotherOnDino) {
   EXPECT_EQ(overlapping, 0);
 }
 
-// The default config with the merge's narrow joins off (narrow_join_share 1).
-// `text` with cuts along the exact iso-lines (straighten_passes: 0): the merge's tests below
-// were made for the pieces those cuts leave, which the straightened cuts no longer do.
-std::string with_exact_isolines(std::string text) {
-  const std::string cut_line = "{impl: cut.harmonic,      back: [select]}";
-  const auto at = text.find(cut_line);
-  EXPECT_NE(at, std::string::npos) << "the default config's cut line changed";
-  if (at != std::string::npos)
-    text.replace(at, cut_line.size(),
-                 "{impl: cut.harmonic, params: {straighten_passes: 0}, back: [select]}");
+// `text` with the node line `from` (of the default config) replaced by `to`.
+std::string with_node_line(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "the default config's line " << from << " changed";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
   return text;
 }
 
+// `text` with cuts along the exact iso-lines (straighten_passes: 0): the merge's tests below
+// were made for the pieces those cuts leave, which the straightened cuts no longer do.
+std::string with_exact_isolines(const std::string& text) {
+  return with_node_line(text, "{impl: cut.harmonic,      back: [select]}",
+                        "{impl: cut.harmonic, params: {straighten_passes: 0}, back: [select]}");
+}
+
+// The default config with the merge's narrow joins off (narrow_join_share 1), cut along the
+// exact iso-lines.
 std::string without_narrow_joins() {
-  const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
-  std::string text = with_exact_isolines(default_config_text());
-  const auto at = text.find(merge_line);
-  EXPECT_NE(at, std::string::npos) << "the default config's merge line changed";
-  if (at != std::string::npos)
-    text.replace(at, merge_line.size(),
-                 "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
-  return text;
+  return with_node_line(with_exact_isolines(default_config_text()),
+                        "{impl: merge.congruent,   to: [layout]}",
+                        "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
 }
 
 // anchor_dense at 2% with the merge's narrow joins off (narrow_join_share: 1; femur, three_peaks
