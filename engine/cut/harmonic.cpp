@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <string>
@@ -191,12 +192,66 @@ double hole_split_value(const Eigen::VectorXd& f, const std::vector<int>& loop) 
 
 namespace {
 
+// How far the line p0 -> x -> p1 turns at x, a point of the edge with direction `d`, once the
+// faces beside the edge are unfolded into one plane (radians): straight where the two
+// segments make supplementary angles with the edge.
+double turn_at(const Mesh::Point& x, const Mesh::Point& d, const Mesh::Point& p0,
+               const Mesh::Point& p1) {
+  auto angle = [&](const Mesh::Point& v) {
+    const double length = v.norm() * d.norm();
+    return length > 0.0 ? std::acos(std::clamp(OpenMesh::dot(v, d) / length, -1.0, 1.0))
+                        : 0.5 * std::numbers::pi;
+  };
+  return std::abs(std::numbers::pi - angle(p0 - x) - angle(p1 - x));
+}
+
+// Per edge, whether its crossing lies on a line with two ends apart (`next` and `count` link each
+// crossing to the crossings of the faces beside it, as straighten_crossings builds them). A
+// closed line (a loop around a tube or around one vertex) has no end to hold it, nor has a loop
+// that leaves a vertex on the line and comes back to it: shortened pass after pass, either
+// would shrink, a loop to nothing.
+std::vector<char> held_by_ends(const Mesh& part, const std::vector<int>& side,
+                               const std::vector<double>& t,
+                               const std::vector<std::array<int, 2>>& next,
+                               const std::vector<int>& count) {
+  auto end_vertex = [&](int e) {  // the vertex on the line that ends the line at crossing e
+    for (int k = 0; k < 2; ++k) {
+      const auto h = part.halfedge_handle(part.edge_handle(e), k);
+      if (part.is_boundary(h)) continue;
+      const int third = part.to_vertex_handle(part.next_halfedge_handle(h)).idx();
+      if (side[third] == 0) return third;
+    }
+    return -1;
+  };
+  const int edges = static_cast<int>(t.size());
+  std::vector<char> held(edges, 0), seen(edges, 0);
+  for (int e = 0; e < edges; ++e) {
+    if (t[e] < 0 || count[e] == 2 || seen[e]) continue;
+    std::vector<int> line{e};  // from this end along the line to its other end
+    for (int from = e, at = next[e][0]; at >= 0 && at != e;) {
+      line.push_back(at);
+      if (count[at] != 2) break;
+      const int after = next[at][0] != from ? next[at][0] : next[at][1];
+      from = at;
+      at = after;
+    }
+    const int first = end_vertex(line.front()), last = end_vertex(line.back());
+    const bool loop = line.size() > 1 && first >= 0 && first == last;
+    for (int crossing : line) {
+      seen[crossing] = 1;
+      held[crossing] = !loop;
+    }
+  }
+  return held;
+}
+
 // Slides the crossings `t` (per edge: the crossing's parameter from v0 to v1, -1 where the edge
 // is not crossed) along their edges, `passes` times in edge order, each to the point of its edge
 // nearest to a straight path between its two neighbours on the line (the crossings of the two
-// faces beside it). Faces with a corner on the line (`side` 0) end the line there.
+// faces beside it), where the line turns by more than `min_turn` (radians) there. Faces with a
+// corner on the line (`side` 0) end the line there; a closed line stays as it is.
 void straighten_crossings(const Mesh& part, const std::vector<int>& side, std::vector<double>& t,
-                          int passes) {
+                          int passes, double min_turn) {
   const int edges = static_cast<int>(part.n_edges());
   std::vector<std::array<int, 2>> next(edges, {-1, -1});
   std::vector<int> count(edges, 0);
@@ -214,11 +269,12 @@ void straighten_crossings(const Mesh& part, const std::vector<int>& side, std::v
       ++count[e];
     }
   }
+  const std::vector<char> held = held_by_ends(part, side, t, next, count);
   // The ends of edge e (its first halfedge's, as a smart handle's v0() and v1()).
   auto ends = [&](int e) {
     const auto h = part.halfedge_handle(part.edge_handle(e), 0);
     return std::array<Mesh::Point, 2>{part.point(part.from_vertex_handle(h)),
-                                     part.point(part.to_vertex_handle(h))};
+                                      part.point(part.to_vertex_handle(h))};
   };
   auto point = [&](int e) {
     const auto [a, b] = ends(e);
@@ -226,11 +282,12 @@ void straighten_crossings(const Mesh& part, const std::vector<int>& side, std::v
   };
   for (int pass = 0; pass < passes; ++pass) {
     for (int e = 0; e < edges; ++e) {
-      if (t[e] < 0 || count[e] != 2) continue;
+      if (t[e] < 0 || count[e] != 2 || !held[e]) continue;
       const Mesh::Point p0 = point(next[e][0]), p1 = point(next[e][1]);
       // Named copies, not a structured binding: clang 14 cannot capture one in a lambda.
       const std::array<Mesh::Point, 2> end = ends(e);
       const Mesh::Point a = end[0], b = end[1];
+      if (turn_at(point(e), b - a, p0, p1) <= min_turn) continue;
       auto length = [&](double s) {
         const Mesh::Point p = (1.0 - s) * a + s * b;
         return (p - p0).norm() + (p - p1).norm();
@@ -287,7 +344,8 @@ std::vector<Mesh> cut_along_isoline(const Mesh& part, const Eigen::VectorXd& f, 
     if (side[a] * side[b] < 0) crossing[e.idx()] = (value - f[a]) / (f[b] - f[a]);
   }
   if (options.straighten_passes > 0)
-    straighten_crossings(part, side, crossing, options.straighten_passes);
+    straighten_crossings(part, side, crossing, options.straighten_passes,
+                         options.straighten_turn_degrees * std::numbers::pi / 180.0);
   auto crossing_parameter = [&](auto e) { return crossing[e.idx()]; };
   for (auto e : part.edges()) {
     if (side[e.v0().idx()] * side[e.v1().idx()] >= 0) continue;

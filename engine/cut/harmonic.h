@@ -71,9 +71,14 @@ struct CutOptions {
   /// segment per face): the exact iso-line zig-zags across long thin triangles (a coarsely
   /// triangulated flat region), and a zig-zag cut prints as a sawtooth edge nobody can cut or
   /// glue cleanly. Ends of the line (a crossing beside a vertex on the iso-line, or at the
-  /// part's boundary) stay. 0: the exact iso-line (the default: straightened cuts print fewer
-  /// sawtooth corners but move the cuts, which can cost strips; docs/stages/cut.md).
-  int straighten_passes = 0;
+  /// part's boundary) stay; a line without two ends apart (a closed loop, or a loop from a
+  /// vertex on the iso-line back to it) is not straightened, as it would shrink. 0: the exact
+  /// iso-line.
+  int straighten_passes = 8;
+  /// Only a crossing where the line turns by more than this (degrees, the two faces beside
+  /// its edge unfolded into one plane) slides: a zig-zag turns sharply at every crossing, a
+  /// smooth iso-line hardly at any, and stays where the field puts it. 0: every crossing.
+  double straighten_turn_degrees = 30.0;
 };
 
 /// Cuts `part` along the iso-line f = value: each crossed edge gets one new vertex (position,

@@ -26,9 +26,14 @@ void register_cut_harmonic(Registry& registry) {
               ParamRange{0.0, 0.5, false, true})
           .add(
               "straighten_passes", [](O & o) -> auto& { return o.cut.cut.cut.straighten_passes; },
-              "passes sliding each crossing along its edge to shorten a cut that zig-zags "
-              "across thin triangles (0: the exact iso-line)",
+              "passes sliding each sharply turning crossing along its edge to shorten a cut that "
+              "zig-zags across thin triangles (0: the exact iso-line)",
               between(0, 100))
+          .add(
+              "straighten_turn_degrees",
+              [](O & o) -> auto& { return o.cut.cut.cut.straighten_turn_degrees; },
+              "only crossings where the cut turns by more than this slide (0: every crossing)",
+              between(0, 180))
           .add(
               "snap_tolerance", [](O & o) -> auto& { return o.cut.snap_tolerance; },
               "also snap crossings within this fraction of the tolerance of a vertex (no "

@@ -432,16 +432,27 @@ TEST(Pieces, CrowdedLabelsPlacedFirstLeaveNoTextOverAnotherOnDino) {
   EXPECT_EQ(overlapping, 0);
 }
 
-// The default config with the merge's narrow joins off (narrow_join_share 1).
-std::string without_narrow_joins() {
-  const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
-  std::string text = default_config_text();
-  const auto at = text.find(merge_line);
-  EXPECT_NE(at, std::string::npos) << "the default config's merge line changed";
-  if (at != std::string::npos)
-    text.replace(at, merge_line.size(),
-                 "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
+// `text` with the node line `from` (of the default config) replaced by `to`.
+std::string with_node_line(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "the default config's line " << from << " changed";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
   return text;
+}
+
+// `text` with cuts along the exact iso-lines (straighten_passes: 0): the merge's tests below
+// were made for the pieces those cuts leave, which the straightened cuts no longer do.
+std::string with_exact_isolines(const std::string& text) {
+  return with_node_line(text, "{impl: cut.harmonic,      back: [select]}",
+                        "{impl: cut.harmonic, params: {straighten_passes: 0}, back: [select]}");
+}
+
+// The default config with the merge's narrow joins off (narrow_join_share 1), cut along the
+// exact iso-lines.
+std::string without_narrow_joins() {
+  return with_node_line(with_exact_isolines(default_config_text()),
+                        "{impl: merge.congruent,   to: [layout]}",
+                        "{impl: merge.congruent, params: {narrow_join_share: 1}, to: [layout]}");
 }
 
 // anchor_dense at 2% with the merge's narrow joins off (narrow_join_share: 1; femur, three_peaks
@@ -493,7 +504,8 @@ TEST(Pieces, NarrowStripsAreFoldedOutOfANeighbourOnThreePeaks) {
   if (meshes.empty()) GTEST_SKIP() << "libcgal-demo is not installed";
   const auto before =
       run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks", 0, without_narrow_joins());
-  const auto after = run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks");
+  const auto after = run_pipeline(meshes.at("three_peaks"), "2%", "three_peaks", 0,
+                                  with_exact_isolines(default_config_text()));
   ASSERT_TRUE(before.result.ok) << before.result.error;
   ASSERT_TRUE(after.result.ok) << after.result.error;
   EXPECT_GE(narrow_pieces(before).size(), 2u);
@@ -553,7 +565,8 @@ TEST(Pieces, LabelsNoLeaderReachesArePrintedClearNearTheirSeamOnElephantWithHole
 // min_width_mm over 100% and 63% of their area) beside pieces whose every hinge laid them over
 // their neighbours. The part of each and a neighbouring part, glued back along the cut that
 // parted them, are one strip within the tolerance: the merge refines them together in 3D,
-// certified, and the two print as one piece.
+// certified, and the two print as one piece. (Cut along the exact iso-lines, which made those
+// bands.)
 TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
   // Run as a user runs it (the OFF read in double precision, so the cuts are the command's).
   const std::filesystem::path archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
@@ -563,8 +576,12 @@ TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
       "tar -xzf " + archive.string() + " -C " + dir.string() + " data/meshes/couplingdown.off";
   ASSERT_EQ(std::system(unpack.c_str()), 0) << unpack;
   const auto input = dir / "data/meshes/couplingdown.off";
-  const testing::CommandResult run = testing::run_command(
-      "run " + input.string() + " --tolerance 2% --threads 2 -q -o " + (dir / "out").string());
+  std::string config = with_exact_isolines(
+      testing::read_text(std::filesystem::path(PAPERCRAFT_SOURCE_DIR) / "configs/default.yaml"));
+  std::ofstream(dir / "exact.yaml") << config;
+  const testing::CommandResult run =
+      testing::run_command("run " + input.string() + " --tolerance 2% --threads 2 -q -c " +
+                           (dir / "exact.yaml").string() + " -o " + (dir / "out").string());
   ASSERT_EQ(run.exit_code, 0) << run.output;
   testing::PipelineOutput out;
   out.result.ok = true;
@@ -583,16 +600,14 @@ TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
 
   // Each join judged costs a merge of the whole model: with a budget of one, the first join is
   // kept, the second is not judged, and a note says where the budget ran out.
-  std::string config = testing::read_text(std::filesystem::path(PAPERCRAFT_SOURCE_DIR) /
-                                          "configs/default.yaml");
   const std::string merge_line = "{impl: merge.congruent,   to: [layout]}";
   ASSERT_NE(config.find(merge_line), std::string::npos);
   config.replace(config.find(merge_line), merge_line.size(),
                  "{impl: merge.congruent, params: {most_rejoin_trials: 1}, to: [layout]}");
   std::ofstream(dir / "budget.yaml") << config;
-  const testing::CommandResult budget = testing::run_command(
-      "run " + input.string() + " --tolerance 2% --threads 2 -q -c " +
-      (dir / "budget.yaml").string() + " -o " + (dir / "budget").string());
+  const testing::CommandResult budget =
+      testing::run_command("run " + input.string() + " --tolerance 2% --threads 2 -q -c " +
+                           (dir / "budget.yaml").string() + " -o " + (dir / "budget").string());
   ASSERT_EQ(budget.exit_code, 0) << budget.output;
   const nlohmann::json budget_notes =
       nlohmann::json::parse(testing::read_text(dir / "budget/couplingdown/report.json"))
@@ -601,8 +616,8 @@ TEST(Pieces, ANarrowPieceIsRefinedTogetherWithItsNeighbourInThreeD) {
   for (const auto& note : budget_notes) {
     const std::string text = note.get<std::string>();
     joined += text.find("together with its neighbour's") != std::string::npos;
-    stopped += text.find("joins in 3D: stopped after 1 merge of the whole model") !=
-               std::string::npos;
+    stopped +=
+        text.find("joins in 3D: stopped after 1 merge of the whole model") != std::string::npos;
   }
   EXPECT_EQ(joined, 1) << budget_notes.dump();
   EXPECT_EQ(stopped, 1) << budget_notes.dump();

@@ -586,9 +586,10 @@ int sharp_corners(const std::vector<Vec3>& points, double degrees) {
 
 // A field whose iso-line zig-zags across a flat grid (the middle row alternately above and below
 // the iso-value, as the harmonic field does across long thin triangles): the exact iso-line
-// turns sharply at almost every crossing; straightened, each crossing slides along its edge
-// and the cut runs nearly straight, still one new vertex per crossed edge, inside that edge,
-// with its texture coordinates where it lies, and the pieces still cover the part.
+// turns sharply at almost every crossing; straightened (the default), each crossing slides
+// along its edge and the cut runs nearly straight, still one new vertex per crossed edge,
+// inside that edge, with its texture coordinates where it lies, and the pieces still cover
+// the part.
 TEST(Cut, StraighteningTakesTheZigZagOutOfACut) {
   const int nx = 41;
   const Mesh grid = flat_grid(nx, 3, 20.0, 2.0, 0.0);  // cells of 0.5 x 1
@@ -598,7 +599,7 @@ TEST(Cut, StraighteningTakesTheZigZagOutOfACut) {
     f[v.idx()] = j == 1 ? 1.0 + (i % 2 ? 0.6 : -0.6) : j;
   }
   CutOptions exact, straight;
-  straight.straighten_passes = 4;
+  exact.straighten_passes = 0;
   const auto zigzag = cut_along_isoline(grid, f, 1.0, exact);
   const auto cut = cut_along_isoline(grid, f, 1.0, straight);
   ASSERT_EQ(zigzag.size(), 2u);
@@ -631,6 +632,32 @@ TEST(Cut, StraighteningTakesTheZigZagOutOfACut) {
     EXPECT_NEAR(uv[0], p[0] / 20.0, 1e-12);
     EXPECT_NEAR(uv[1], p[1] / 2.0, 1e-12);
   }
+}
+
+// A gently curved iso-line (it turns far less than straighten_turn_degrees at each crossing)
+// is cut where the field puts it, bit for bit: straightening it whole would pull the curve
+// towards its chord and move the cut away from the point it was chosen through.
+TEST(Cut, StraighteningLeavesASmoothIsoLineWhereItIs) {
+  const int nx = 41;
+  const Mesh grid = flat_grid(nx, 5, 20.0, 4.0, 0.0);
+  Eigen::VectorXd f(grid.n_vertices());
+  for (auto v : grid.vertices()) {
+    const auto p = grid.point(v);
+    f[v.idx()] = p[1] / 4.0 + 0.05 * std::sin(0.3 * p[0]);
+  }
+  CutOptions exact, every_crossing;
+  exact.straighten_passes = 0;
+  every_crossing.straighten_turn_degrees = 0.0;
+  auto cut_points = [&](const CutOptions& options) {
+    const auto pieces = cut_along_isoline(grid, f, 0.5, options);
+    EXPECT_EQ(pieces.size(), 2u);
+    return pieces.size() == 2 ? cut_polyline(pieces[0], pieces[1]) : std::vector<Vec3>{};
+  };
+  const std::vector<Vec3> field = cut_points(exact);
+  ASSERT_GT(field.size(), 20u);
+  EXPECT_EQ(sharp_corners(field, 30), 0);
+  EXPECT_EQ(cut_points(CutOptions{}), field);
+  EXPECT_NE(cut_points(every_crossing), field);
 }
 
 TEST(SplitConnectedComponents, SeparatesAndUnpinches) {
