@@ -82,10 +82,10 @@ TEST(SmoothSeams, NothingMovesWithoutAPrintScaleOrWhereThePieceLeftWouldBeTooSma
   EXPECT_EQ(sawtooth_of(smooth_seams(sheet, 500.0, 0.0, 0.25, options)), 6);
 }
 
-// A cone of 3 mm rulings cut open along one of them (corners summing to 358 degrees round its
-// apex), as two pieces: three of its four fan triangles, and the fourth. Hinged together over
-// either ruling they share, the other opens into a slit 2 degrees wide and 3 mm long: too thin
-// for a glue flap, and its tip and mouth three sawtooth corners.
+// A cone of 3 model-unit rulings cut open along one of them (corners summing to 358 degrees
+// round its apex), as two pieces: three of its four fan triangles, and the fourth. Hinged
+// together over either ruling they share, the other opens into a slit 2 degrees wide: at 10 mm
+// per unit, 30 mm long and at most 1 mm wide, too thin for a glue flap.
 std::vector<FlatStrip> opened_cone_in_two() {
   const double fan = (2 * std::numbers::pi - 2 * std::numbers::pi / 180) / 4, radius = 3.0;
   const double rim = std::sqrt(2.0) * radius * std::sin(fan / 2);
@@ -111,23 +111,23 @@ std::vector<FlatStrip> opened_cone_in_two() {
   return {piece(0, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}), piece(1, {{0, 4, 5}})};
 }
 
-TEST(HingeModestStrips, DeclinesAHingeWhoseSlitCostsMoreThanThePieceItSaves) {
+TEST(HingeModestStrips, WeighsThePieceSavedAgainstTheJoiningStripItsSlitNeeds) {
   const std::vector<FlatStrip> cone = opened_cone_in_two();
-  const double min_area = 3.0;  // the small piece's 4.5 mm^2 is legal but under twice that
+  const double min_area = 3.0;  // the small piece's 4.5 is legal but under twice that
   ASSERT_GT(area_of(cone[1]), min_area);
   ASSERT_LT(area_of(cone[1]), 2 * min_area);
   // Judged by the slit alone it is hinged: one piece with a seam of its own.
   EXPECT_EQ(hinge_modest_strips(cone, 2 * min_area).size(), 1u);
-  // Judged by what it costs a person, it stays: one piece less, but a joining strip more and
-  // three sawtooth corners.
+  // Judged by what it costs a person: one piece less, but one joining strip more, so the hinge
+  // gains only the 30 mm of glue line it saves. Where glue length costs nothing, it does not
+  // pay and both pieces stay.
   MergeOptions options;
-  options.mm_per_unit = 1.0;
+  options.mm_per_unit = 10.0;
+  options.weights.glue_per_metre = 0.0;
   const std::vector<FlatStrip> kept = hinge_modest_strips(cone, 2 * min_area, options);
   ASSERT_EQ(kept.size(), 2u);
   expect_valid(kept);
-  // At a scale where the slit is long (30 mm), no sawtooth: the hinge saves a piece for a
-  // joining strip and the shorter glue line, and is made.
-  options.mm_per_unit = 10.0;
+  options.weights.glue_per_metre = 1.0;
   EXPECT_EQ(hinge_modest_strips(cone, 2 * min_area, options).size(), 1u);
 }
 
