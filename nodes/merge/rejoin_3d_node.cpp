@@ -34,6 +34,7 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
   std::set<std::pair<const AcceptedStrip*, const AcceptedStrip*>> tried;
   int trials = 0;  // whole-model merges judged
   bool out_of_budget = false;
+  std::optional<double> merged_effort;  // model_effort of `merged`, once measured
   for (int round = 0; round < kMostRejoins && !out_of_budget; ++round) {
     const std::vector<Short> shorts =
         short_pieces(merged, limits, options.narrow_join_share, scale);
@@ -85,7 +86,8 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
         const int after = shortfalls(short_pieces(trial, limits, options.narrow_join_share, scale),
                                      options.narrow_join_share);
         const bool by_effort = options.mm_per_unit > 0.0;
-        const double effort_before = by_effort ? model_effort(merged, limits, options) : 0.0;
+        if (by_effort && !merged_effort) merged_effort = model_effort(merged, limits, options);
+        const double effort_before = by_effort ? *merged_effort : 0.0;
         const double effort_after = by_effort ? model_effort(trial, limits, options) : 0.0;
         spdlog::debug(
             "{}: parts {} and {} are one strip ({} faces); pieces left short {} -> {}, effort "
@@ -107,6 +109,7 @@ Merged rejoin_in_3d(std::vector<std::shared_ptr<const UnfoldedStrip>>& unfolded,
         spdlog::info("{}: {}", model.name, text.str());
         unfolded = std::move(trial_unfolded);
         merged = std::move(trial);
+        merged_effort = effort_after;
         improved = true;
       }
       if (improved || out_of_budget) break;
