@@ -114,6 +114,19 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
   auto shortfall_of = [&](const std::vector<Mesh>& pieces) {
     return cut_shortfall(pieces, options.limits, one_strip);
   };
+  // A straightened cut (CutOptions::straighten_passes) that leaves a piece short of the limits
+  // gives way to the exact iso-line where that falls less short: straightening moves a cut
+  // across thin triangles, which can leave a narrow band the exact line does not.
+  const auto cut_at = [&](const Eigen::VectorXd& field, double at) {
+    std::vector<Mesh> pieces = cut_along_isoline(part, field, at, options.cut);
+    if (!options.limits.active() || options.cut.straighten_passes == 0) return pieces;
+    const double straightened = shortfall_of(pieces);
+    if (straightened == 0.0) return pieces;
+    CutOptions exact = options.cut;
+    exact.straighten_passes = 0;
+    std::vector<Mesh> along = cut_along_isoline(part, field, at, exact);
+    return shortfall_of(along) < straightened ? along : pieces;
+  };
   for (const double min_fraction : {options.min_piece_fraction, 0.0}) {
     for (const Attempt& attempt : attempts) {
       const Eigen::VectorXd* field = attempt.across ? across() : &f;
@@ -123,7 +136,7 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
               ? (disjoint || !attempt.across ? 0.5 : median(*field))
               : (attempt.across ? std::clamp(field_value_at(part, *field, witness), lo, hi)
                                 : f_witness);
-      std::vector<Mesh> pieces = cut_along_isoline(part, *field, value, options.cut);
+      std::vector<Mesh> pieces = cut_at(*field, value);
       if (!makes_progress(part, pieces, area, min_fraction)) continue;
       if (!options.limits.active()) return {std::move(pieces), value, attempt.across};
       double shortfall = shortfall_of(pieces);
@@ -142,7 +155,7 @@ WitnessCut cut_through_witness(const Mesh& part, const std::vector<int>& first,
         if (below < lo && above > hi) break;
         for (const double near : {below, above}) {
           if (near < lo || near > hi) continue;
-          std::vector<Mesh> moved = cut_along_isoline(part, *field, near, options.cut);
+          std::vector<Mesh> moved = cut_at(*field, near);
           if (!makes_progress(part, moved, area, min_fraction)) continue;
           shortfall = shortfall_of(moved);
           if (shortfall == 0.0) return {std::move(moved), near, attempt.across};
